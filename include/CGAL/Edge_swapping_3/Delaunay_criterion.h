@@ -1,0 +1,67 @@
+// The Delaunay (InSphere) swap criterion and the local Delaunay test of a facet.
+
+#ifndef CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H
+#define CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H
+
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/internal/perturbed_predicates.h>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// How cospherical (and, on the hull, cocircular) ties are broken.
+enum Perturbation
+{
+  CGAL_PERTURBATION, ///< CGAL's symbolic perturbation: the result equals Delaunay_triangulation_3
+  NO_PERTURBATION    ///< a point on the sphere does not violate it: any of the tied triangulations
+};
+
+/// Whether facet `(c, i)` is locally Delaunay: the vertex across it is not in
+/// conflict with `c` under the test CGAL's Delaunay insertion uses (sphere of
+/// a finite cell; for a cell outside a hull facet, the points beyond the facet
+/// and the coplanar ones inside its circle). Facets on the hull always pass.
+template <class Tr>
+bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i,
+                         Perturbation perturbation = CGAL_PERTURBATION)
+{
+  const bool perturb = (perturbation == CGAL_PERTURBATION);
+  const auto n = c->neighbor(i);
+  const auto m = n->vertex(n->index(c));
+  if(tr.is_infinite(m))
+    return internal::side_of_sphere(tr, n, c->vertex(i)->point(), perturb) != ON_BOUNDED_SIDE;
+  return internal::side_of_sphere(tr, c, m->point(), perturb) != ON_BOUNDED_SIDE;
+}
+
+/// The number of facets (finite or not) of `tr` that are not locally Delaunay.
+template <class Tr>
+std::size_t number_of_non_delaunay_facets(const Tr& tr,
+                                          Perturbation perturbation = CGAL_PERTURBATION)
+{
+  std::size_t n = 0;
+  for(auto f : tr.all_facets())
+    if(!is_locally_delaunay(tr, f.first, f.second, perturbation))
+      ++n;
+  return n;
+}
+
+/// Model of `SwapCriterion_3`: swap when the inspected facet is not locally
+/// Delaunay. For five points with two triangulations exactly one is Delaunay
+/// (with the perturbation), so a swap always moves toward the Delaunay triangulation.
+struct Delaunay_criterion
+{
+  Perturbation perturbation = CGAL_PERTURBATION;
+
+  Delaunay_criterion() = default;
+  explicit Delaunay_criterion(Perturbation p) : perturbation(p) {}
+
+  template <class Tr>
+  bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
+  {
+    return !is_locally_delaunay(tr, conf.cell(), conf.index(), perturbation);
+  }
+};
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H

@@ -1,0 +1,222 @@
+// A flip planned on a Triangulation_3: the cells it removes and the vertex
+// tuples of the cells it creates, with the exact test that the result is a
+// valid triangulation, and the combinatorial surgery that carries it out.
+//
+// New cells get their vertex order from an old cell by replacing one vertex
+// (a cell stays positively oriented when a vertex is replaced by a point on
+// the same side of the opposite facet), so a geometric test of each new cell
+// is exactly the convexity test of the paper's appendix A.
+
+#ifndef CGAL_EDGE_SWAPPING_3_FLIP_PLAN_H
+#define CGAL_EDGE_SWAPPING_3_FLIP_PLAN_H
+
+#include <CGAL/assertions.h>
+#include <CGAL/enum.h>
+#include <array>
+#include <cstddef>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// The bistellar flips of five points (paper Fig. 6). `FLIP_2_2` is the flip of
+/// a planar hull face: a 4-4 flip one of whose ring vertices is the infinite vertex.
+enum Flip_kind { FLIP_2_3 = 0, FLIP_3_2 = 1, FLIP_2_2 = 2, FLIP_4_4 = 3 };
+
+constexpr int number_of_flip_kinds = 4;
+
+inline const char* flip_kind_name(Flip_kind k)
+{
+  static const char* names[] = {"2-3", "3-2", "2-2", "4-4"};
+  return names[k];
+}
+
+/// The cells a flip removes and the cells it would create (vertex tuples,
+/// positively oriented when the flip is valid).
+template <class Tr>
+struct Flip_plan
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 4> Tuple;
+
+  Flip_kind kind = FLIP_2_3;
+  int number_of_old_cells = 0;
+  int number_of_new_cells = 0;
+  std::array<Cell_handle, 4> old_cells;
+  std::array<Tuple, 4> new_cells;
+
+  void add_new_cell(const Tuple& t) { new_cells[number_of_new_cells++] = t; }
+  void add_old_cell(Cell_handle c) { old_cells[number_of_old_cells++] = c; }
+};
+
+namespace internal {
+
+template <class Tr>
+typename Flip_plan<Tr>::Tuple tuple_of(typename Tr::Cell_handle c)
+{
+  return {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+}
+
+template <class Tuple, class Vertex_handle>
+Tuple replaced(Tuple t, Vertex_handle from, Vertex_handle to)
+{
+  for(auto& v : t)
+    if(v == from) { v = to; return t; }
+  CGAL_assertion(false);
+  return t;
+}
+
+template <class Tuple, class Vertex_handle>
+bool contains(const Tuple& t, Vertex_handle v)
+{
+  return t[0] == v || t[1] == v || t[2] == v || t[3] == v;
+}
+
+} // namespace internal
+
+/// Exact orientation of a planned cell. A finite cell is tested directly. A
+/// cell with the infinite vertex stands for the outside of a hull facet: it is
+/// POSITIVE when no other finite vertex of the flip lies strictly beyond that
+/// facet, NEGATIVE otherwise (`others` are the vertices of the old cells).
+template <class Tr, class Tuple>
+Orientation planned_cell_orientation(const Tr& tr, const Tuple& t,
+                                     const typename Tr::Vertex_handle* others, int n_others)
+{
+  auto orientation = tr.geom_traits().orientation_3_object();
+  int inf = -1;
+  for(int k = 0; k < 4; ++k)
+    if(tr.is_infinite(t[k])) inf = k;
+  if(inf < 0)
+    return orientation(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point());
+
+  for(int m = 0; m < n_others; ++m)
+  {
+    const auto s = others[m];
+    if(tr.is_infinite(s) || internal::contains(t, s))
+      continue;
+    Tuple u = t;
+    u[inf] = s;
+    // Replacing the infinite vertex by a point beyond the facet is POSITIVE.
+    if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) == POSITIVE)
+      return NEGATIVE;
+  }
+  return POSITIVE;
+}
+
+/// The least orientation among the planned cells: POSITIVE exactly when the
+/// flip yields a valid triangulation (every new cell positively oriented, the
+/// hull stays convex).
+template <class Tr>
+Orientation worst_orientation(const Tr& tr, const Flip_plan<Tr>& plan)
+{
+  std::array<typename Tr::Vertex_handle, 16> vertices;
+  int n = 0;
+  for(int k = 0; k < plan.number_of_old_cells; ++k)
+    for(int i = 0; i < 4; ++i)
+    {
+      auto v = plan.old_cells[k]->vertex(i);
+      bool seen = false;
+      for(int m = 0; m < n; ++m) seen = seen || vertices[m] == v;
+      if(!seen) vertices[n++] = v;
+    }
+
+  Orientation worst = POSITIVE;
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+  {
+    const Orientation o = planned_cell_orientation(tr, plan.new_cells[k], vertices.data(), n);
+    if(o == NEGATIVE) return NEGATIVE;
+    if(o == COPLANAR) worst = COPLANAR;
+  }
+  return worst;
+}
+
+/// Carries out a valid plan: the old cells are replaced by the new ones and
+/// glued to the outside. Old cells are reused in place, so handles to them
+/// name other tetrahedra afterwards. Writes the handles of the new cells to
+/// `created` and returns their number. Purely combinatorial.
+template <class Tr>
+int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
+                 std::array<typename Tr::Cell_handle, 4>& created)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  auto& tds = tr.tds();
+
+  // The facets on the boundary of the old cells, with the cell outside them.
+  struct Outside { std::array<Vertex_handle, 3> v; Cell_handle cell; int index; };
+  std::array<Outside, 8> outside;
+  int n_out = 0;
+  auto is_old = [&](Cell_handle c) {
+    for(int k = 0; k < plan.number_of_old_cells; ++k)
+      if(plan.old_cells[k] == c) return true;
+    return false;
+  };
+  for(int k = 0; k < plan.number_of_old_cells; ++k)
+  {
+    Cell_handle c = plan.old_cells[k];
+    for(int i = 0; i < 4; ++i)
+    {
+      Cell_handle nb = c->neighbor(i);
+      if(is_old(nb)) continue;
+      CGAL_assertion(n_out < 8);
+      Outside& o = outside[n_out++];
+      o.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+      o.cell = nb;
+      o.index = nb->index(c);
+    }
+  }
+
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+  {
+    const auto& t = plan.new_cells[k];
+    if(k < plan.number_of_old_cells)
+    {
+      created[k] = plan.old_cells[k];
+      created[k]->set_vertices(t[0], t[1], t[2], t[3]);
+    }
+    else
+      created[k] = tds.create_cell(t[0], t[1], t[2], t[3]);
+  }
+
+  auto has_all = [](Cell_handle c, const Vertex_handle* v) {
+    return c->has_vertex(v[0]) && c->has_vertex(v[1]) && c->has_vertex(v[2]);
+  };
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+  {
+    Cell_handle a = created[k];
+    for(int i = 0; i < 4; ++i)
+    {
+      const Vertex_handle f[3] = {a->vertex((i + 1) & 3), a->vertex((i + 2) & 3),
+                                  a->vertex((i + 3) & 3)};
+      bool glued = false;
+      for(int m = 0; m < plan.number_of_new_cells && !glued; ++m)
+        if(m != k && has_all(created[m], f))
+        {
+          a->set_neighbor(i, created[m]);
+          glued = true;
+        }
+      for(int m = 0; m < n_out && !glued; ++m)
+      {
+        const auto& o = outside[m];
+        if(o.v[0] != f[0] && o.v[0] != f[1] && o.v[0] != f[2]) continue;
+        if(o.v[1] != f[0] && o.v[1] != f[1] && o.v[1] != f[2]) continue;
+        if(o.v[2] != f[0] && o.v[2] != f[1] && o.v[2] != f[2]) continue;
+        a->set_neighbor(i, o.cell);
+        o.cell->set_neighbor(o.index, a);
+        glued = true;
+      }
+      CGAL_assertion(glued);
+    }
+    for(int i = 0; i < 4; ++i)
+      a->vertex(i)->set_cell(a);
+  }
+
+  for(int k = plan.number_of_new_cells; k < plan.number_of_old_cells; ++k)
+    tds.delete_cell(plan.old_cells[k]);
+  return plan.number_of_new_cells;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_FLIP_PLAN_H

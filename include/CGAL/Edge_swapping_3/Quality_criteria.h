@@ -1,0 +1,131 @@
+// Swap criteria that compare the worst tetrahedron of the current and the
+// alternative triangulation of a configuration: MinMax and MaxMin dihedral
+// angle, and aspect ratio (both of the paper's definitions).
+//
+// The measures are computed in double precision, so a swap needs an
+// improvement beyond a relative tolerance: otherwise rounding could make two
+// triangulations each look better than the other, and a run could cycle.
+
+#ifndef CGAL_EDGE_SWAPPING_3_QUALITY_CRITERIA_H
+#define CGAL_EDGE_SWAPPING_3_QUALITY_CRITERIA_H
+
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// The worst value of `measure` (a function of four points) over the finite
+/// tetrahedra of the current and of the alternative triangulation.
+/// `larger_is_worse`: worst means largest; otherwise smallest.
+template <class Tr, class Measure>
+std::pair<double, double> worst_current_and_alternative(const Tr& tr,
+                                                        const Five_point_configuration<Tr>& conf,
+                                                        const Measure& measure,
+                                                        bool larger_is_worse)
+{
+  const auto& plan = conf.flip_plan();
+  auto worse = [&](double a, double b) { return larger_is_worse ? (std::max)(a, b) : (std::min)(a, b); };
+  const double start = larger_is_worse ? -HUGE_VAL : HUGE_VAL;
+  double current = start, alternative = start;
+  for(int k = 0; k < plan.number_of_old_cells; ++k)
+  {
+    const auto c = plan.old_cells[k];
+    if(tr.is_infinite(c)) continue;
+    current = worse(current, measure(c->vertex(0)->point(), c->vertex(1)->point(),
+                                     c->vertex(2)->point(), c->vertex(3)->point()));
+  }
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+  {
+    const auto& t = plan.new_cells[k];
+    if(tr.is_infinite(t[0]) || tr.is_infinite(t[1]) || tr.is_infinite(t[2]) || tr.is_infinite(t[3]))
+      continue;
+    alternative = worse(alternative, measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()));
+  }
+  return {current, alternative};
+}
+
+/// Base of the criteria that improve the worst tetrahedron of a configuration.
+template <class Measure, bool larger_is_worse>
+struct Worst_tetrahedron_criterion
+{
+  /// A swap must improve the worst value by more than this fraction.
+  double relative_tolerance = 1e-9;
+  Measure measure;
+
+  template <class Tr>
+  bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
+  {
+    const auto [current, alternative] = worst_current_and_alternative(tr, conf, measure, larger_is_worse);
+    if(larger_is_worse)
+      return alternative < current * (1 - relative_tolerance);
+    return alternative > current * (1 + relative_tolerance);
+  }
+};
+
+struct Largest_dihedral_angle
+{
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    const auto angles = dihedral_angles(a, b, c, d);
+    return *std::max_element(angles.begin(), angles.end());
+  }
+};
+
+struct Smallest_dihedral_angle
+{
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    const auto angles = dihedral_angles(a, b, c, d);
+    return *std::min_element(angles.begin(), angles.end());
+  }
+};
+
+/// Which of the paper's aspect ratios.
+enum Aspect_ratio_definition
+{
+  EDGE_LENGTH_RATIO, ///< longest over shortest edge
+  RADIUS_RATIO       ///< circumradius over inradius
+};
+
+struct Aspect_ratio
+{
+  Aspect_ratio_definition definition = EDGE_LENGTH_RATIO;
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    return definition == EDGE_LENGTH_RATIO ? edge_length_ratio(a, b, c, d) : radius_ratio(a, b, c, d);
+  }
+};
+
+/// Model of `SwapCriterion_3`: minimize the largest dihedral angle (MinMax).
+typedef Worst_tetrahedron_criterion<Largest_dihedral_angle, true> Min_max_dihedral_angle_criterion;
+
+/// Model of `SwapCriterion_3`: maximize the smallest dihedral angle (MaxMin).
+typedef Worst_tetrahedron_criterion<Smallest_dihedral_angle, false> Max_min_dihedral_angle_criterion;
+
+/// Model of `SwapCriterion_3`: minimize the largest aspect ratio.
+struct Aspect_ratio_criterion : Worst_tetrahedron_criterion<Aspect_ratio, true>
+{
+  Aspect_ratio_criterion() = default;
+  explicit Aspect_ratio_criterion(Aspect_ratio_definition d) { measure.definition = d; }
+};
+
+/// Model of `SwapCriterion_3`: the configuration with fewer tetrahedra (paper
+/// section 4). Only 3-2 flips reduce the count; each removes an edge, a face
+/// and a tetrahedron.
+struct Min_edges_criterion
+{
+  template <class Tr>
+  bool operator()(const Tr&, const Five_point_configuration<Tr>& conf) const
+  {
+    return conf.flip_kind() == FLIP_3_2;
+  }
+};
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_QUALITY_CRITERIA_H

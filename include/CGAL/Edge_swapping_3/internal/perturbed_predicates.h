@@ -1,0 +1,130 @@
+// Exact in-sphere and coplanar in-circle tests, optionally with the symbolic
+// perturbation of Devillers and Teillaud that CGAL's Delaunay_triangulation_3
+// uses, so that a flip algorithm reaches the same triangulation as CGAL, cell
+// for cell, on cospherical and cocircular input.
+//
+// The perturbation lifts point p to |p|^2 + eps^(rank of p), the rank being the
+// position of p in lexicographic (x, y, z) order, the largest point perturbed
+// most. A degenerate determinant is then decided by its leading monomial in eps.
+
+#ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_PERTURBED_PREDICATES_H
+#define CGAL_EDGE_SWAPPING_3_INTERNAL_PERTURBED_PREDICATES_H
+
+#include <CGAL/enum.h>
+#include <algorithm>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+namespace internal {
+
+template <class Gt>
+struct Lexicographic_point_order
+{
+  const Gt& gt;
+  template <class Point>
+  bool operator()(const Point* p, const Point* q) const
+  {
+    return gt.compare_xyz_3_object()(*p, *q) == SMALLER;
+  }
+};
+
+// Side of `p` with respect to the sphere through the positively oriented
+// tetrahedron (p0, p1, p2, p3): ON_POSITIVE_SIDE means inside.
+template <class Gt, class Point>
+Oriented_side side_of_oriented_sphere(const Gt& gt,
+                                      const Point& p0, const Point& p1,
+                                      const Point& p2, const Point& p3,
+                                      const Point& p, bool perturb)
+{
+  const Oriented_side os = gt.side_of_oriented_sphere_3_object()(p0, p1, p2, p3, p);
+  if(os != ON_ORIENTED_BOUNDARY || !perturb)
+    return os;
+
+  const Point* points[5] = {&p0, &p1, &p2, &p3, &p};
+  std::sort(points, points + 5, Lexicographic_point_order<Gt>{gt});
+  auto orientation = gt.orientation_3_object();
+
+  // The coefficient of the leading monomial is the orientation of the four
+  // points left once the largest point is removed (with the sign of its slot).
+  // Two monomials always suffice: five points cannot have two disjoint
+  // coplanar quadruples among the three largest.
+  for(int i = 4; i > 2; --i)
+  {
+    if(points[i] == &p)
+      return ON_NEGATIVE_SIDE; // p0..p3 is positively oriented
+    Orientation o = COPLANAR;
+    if(points[i] == &p3) o = orientation(p0, p1, p2, p);
+    else if(points[i] == &p2) o = orientation(p0, p1, p, p3);
+    else if(points[i] == &p1) o = orientation(p0, p, p2, p3);
+    else o = orientation(p, p1, p2, p3);
+    if(o != COPLANAR)
+      return Oriented_side(o);
+  }
+  CGAL_assertion(false);
+  return ON_NEGATIVE_SIDE;
+}
+
+// Side of `p` with respect to the circle through the non collinear p0, p1, p2,
+// all four points coplanar.
+template <class Gt, class Point>
+Bounded_side coplanar_side_of_bounded_circle(const Gt& gt,
+                                             const Point& p0, const Point& p1,
+                                             const Point& p2, const Point& p,
+                                             bool perturb)
+{
+  const Bounded_side bs = gt.coplanar_side_of_bounded_circle_3_object()(p0, p1, p2, p);
+  if(bs != ON_BOUNDARY || !perturb)
+    return bs;
+
+  const Point* points[4] = {&p0, &p1, &p2, &p};
+  std::sort(points, points + 4, Lexicographic_point_order<Gt>{gt});
+  auto coplanar_orientation = gt.coplanar_orientation_3_object();
+  const Orientation local = coplanar_orientation(p0, p1, p2);
+
+  for(int i = 3; i > 0; --i)
+  {
+    if(points[i] == &p)
+      return ON_UNBOUNDED_SIDE;
+    Orientation o = COLLINEAR;
+    if(points[i] == &p2) o = coplanar_orientation(p0, p1, p);
+    else if(points[i] == &p1) o = coplanar_orientation(p0, p, p2);
+    else o = coplanar_orientation(p, p1, p2);
+    if(o != COLLINEAR)
+      return Bounded_side(o * local);
+  }
+  // Only the monomial of p is left; its coefficient has the sign of `local`.
+  return Bounded_side(-local);
+}
+
+// Whether `p` conflicts with cell `c` of `tr` (the test CGAL's Delaunay
+// insertion uses). An infinite cell conflicts with the points beyond its hull
+// facet, and with the coplanar points inside the facet's circumcircle.
+template <class Tr>
+Bounded_side side_of_sphere(const Tr& tr, typename Tr::Cell_handle c,
+                            const typename Tr::Point& p, bool perturb)
+{
+  const auto& gt = tr.geom_traits();
+  int inf = -1;
+  if(!c->has_vertex(tr.infinite_vertex(), inf))
+    return Bounded_side(side_of_oriented_sphere(gt, c->vertex(0)->point(), c->vertex(1)->point(),
+                                                c->vertex(2)->point(), c->vertex(3)->point(),
+                                                p, perturb));
+
+  // The finite facet, ordered so that replacing the infinite vertex by p keeps
+  // the cell's orientation (the same orders as CGAL, which matters for the
+  // last case of the coplanar perturbation).
+  static const int order[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
+  const auto& q0 = c->vertex(order[inf][0])->point();
+  const auto& q1 = c->vertex(order[inf][1])->point();
+  const auto& q2 = c->vertex(order[inf][2])->point();
+  const Orientation o = gt.orientation_3_object()(q0, q1, q2, p);
+  if(o != COPLANAR)
+    return Bounded_side(o);
+  return coplanar_side_of_bounded_circle(gt, q0, q1, q2, p, perturb);
+}
+
+} // namespace internal
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_INTERNAL_PERTURBED_PREDICATES_H

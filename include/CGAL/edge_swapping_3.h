@@ -1,0 +1,81 @@
+// Edge_swapping_3: the 3-D edge-swapping method of Gandhi and Barth (1993) on
+// CGAL::Triangulation_3. This header is the public entry: it brings in the
+// criteria and defines the two drivers users call.
+//
+//   CGAL::swap_edges(tr, criterion, options)        Algorithm 3, any criterion
+//   CGAL::swap_edges_with_helper(tr, options)       Algorithm 4, the helper strategy
+
+#ifndef CGAL_EDGE_SWAPPING_3_H
+#define CGAL_EDGE_SWAPPING_3_H
+
+#include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/Swap_options.h>
+#include <CGAL/Edge_swapping_3/internal/cycle_driver.h>
+#include <CGAL/Handle_hash_function.h>
+#include <type_traits>
+#include <unordered_set>
+
+namespace CGAL {
+
+/// Algorithm 3 of the paper: cycles over all interior facets and swaps every
+/// swappable configuration that `criterion` (a model of `SwapCriterion_3`)
+/// prefers in its alternative form, until a cycle makes no swap.
+/// With `Edge_swapping_3::Delaunay_criterion` the ending is CONVERGED only if
+/// every facet is then locally Delaunay, else STUCK (Joe's local optima).
+template <class Tr, class Criterion>
+Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
+                                        const Edge_swapping_3::Swap_options& options = {})
+{
+  using namespace Edge_swapping_3;
+  auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](typename Tr::Cell_handle c, int i) {
+    const auto conf = classify_facet(tr, c, i);
+    if(!conf.is_swappable() || !criterion(tr, conf)) return -1;
+    flip(tr, conf);
+    return int(conf.flip_kind());
+  });
+  if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
+  {
+    report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, criterion.perturbation);
+    if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
+  }
+  return report;
+}
+
+/// Algorithm 4 of the paper, the helper strategy, for the Delaunay criterion:
+/// a configuration that is not Delaunay tags its tetrahedra; a swappable
+/// configuration with a tagged tetrahedron is swapped, Delaunay or not, which
+/// lets a non-Delaunay concave configuration out of a local optimum.
+/// Tags live on cells: a flip removes the tags of the cells it replaces.
+template <class Tr>
+Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
+                                                    const Edge_swapping_3::Swap_options& options = {})
+{
+  using namespace Edge_swapping_3;
+  typedef typename Tr::Cell_handle Cell_handle;
+  std::unordered_set<Cell_handle, CGAL::Handle_hash_function> tagged;
+  std::array<Cell_handle, 4> created;
+
+  auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](Cell_handle c, int i) {
+    const auto conf = classify_facet(tr, c, i);
+    if(!is_locally_delaunay(tr, c, i, options.perturbation))
+      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) tagged.insert(conf.tetrahedron(k));
+    if(!conf.is_swappable() || tagged.empty()) return -1;
+    const auto& plan = conf.flip_plan();
+    bool any_tagged = false;
+    for(int k = 0; k < plan.number_of_old_cells; ++k)
+      any_tagged = any_tagged || tagged.count(plan.old_cells[k]) > 0;
+    if(!any_tagged) return -1;
+    for(int k = 0; k < plan.number_of_old_cells; ++k) tagged.erase(plan.old_cells[k]);
+    flip(tr, conf, created);
+    return int(conf.flip_kind());
+  });
+  report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, options.perturbation);
+  if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
+  return report;
+}
+
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_H
