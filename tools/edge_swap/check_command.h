@@ -1,0 +1,38 @@
+// edge_swap check: is a mesh a valid triangulation, how Delaunay is it, and
+// is it CGAL's Delaunay triangulation.
+
+#ifndef EDGE_SWAP_CHECK_COMMAND_H
+#define EDGE_SWAP_CHECK_COMMAND_H
+
+#include "mesh_files.h"
+#include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+
+namespace edge_swap {
+
+/// 0: valid; 1: not a valid triangulation of the convex hull; read errors throw (2).
+inline int run_check(const std::string& path)
+{
+  if(!ends_with(path, ".ele")) throw Usage_error("check reads an .ele mesh, not '" + path + "'");
+  const Input in = read_input(path);
+  Triangulation tr;
+  const std::string problem = build_mesh(tr, in);
+  if(!problem.empty())
+  {
+    std::cout << path << ": invalid: " << problem << '\n';
+    return 1;
+  }
+  const auto cmp = CGAL::Edge_swapping_3::compare_with_delaunay(tr);
+  std::cout << path << ": valid triangulation of the convex hull (orientation, conformity, convex boundary)\n"
+            << "  vertices " << tr.number_of_vertices() << ", cells " << cmp.cells << '\n'
+            << "  faces not locally Delaunay: " << cmp.non_delaunay_facets << '\n'
+            << "  equal to CGAL's Delaunay triangulation: " << (cmp.identical ? "yes" : "no");
+  if(!cmp.identical)
+    std::cout << " (" << cmp.cells_not_in_delaunay << " cells not in it, " << cmp.delaunay_cells_missing
+              << " of its " << cmp.delaunay_cells << " cells missing)";
+  std::cout << '\n';
+  return 0;
+}
+
+} // namespace edge_swap
+
+#endif

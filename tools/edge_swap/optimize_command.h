@@ -1,0 +1,133 @@
+// edge_swap optimize: build or read a triangulation, run a driver, write the result.
+
+#ifndef EDGE_SWAP_OPTIMIZE_COMMAND_H
+#define EDGE_SWAP_OPTIMIZE_COMMAND_H
+
+#include "mesh_files.h"
+#include "progress.h"
+#include <CGAL/edge_swapping_3.h>
+#include <CGAL/Edge_swapping_3/mesh_statistics.h>
+#include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <nlohmann/json.hpp>
+
+namespace edge_swap {
+
+struct Optimize_options
+{
+  std::string input, output, criterion = "delaunay", start = "placing", order = "storage";
+  std::string perturb = "cgal", history, stats;
+  bool helper = false, start_given = false;
+  unsigned int seed = 0;
+  std::size_t max_cycles = 1000;
+};
+
+namespace ES = CGAL::Edge_swapping_3;
+
+/// Builds the start triangulation of a point set as `--start` says.
+inline void build_start(Triangulation& tr, const Input& in, const std::string& start, unsigned int seed)
+{
+  std::vector<Triangulation::Vertex_handle> vertices;
+  if(start == "placing" || start == "placing:input")
+    vertices = ES::insert_by_placing(tr, in.points, start == "placing" ? ES::SPATIAL_ORDER : ES::INPUT_ORDER);
+  else if(start == "delaunay" || start.rfind("scramble:", 0) == 0)
+    vertices = ES::insert_delaunay(tr, in.points);
+  else
+    throw Usage_error("unknown --start '" + start + "' (placing, placing:input, delaunay or scramble:K)");
+  for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
+  if(start.rfind("scramble:", 0) == 0)
+  {
+    const std::string k = start.substr(9);
+    if(k.empty() || k.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage_error("--start scramble:K needs a whole number K, not '" + k + "'");
+    ES::scramble(tr, std::stoull(k), seed);
+  }
+}
+
+inline nlohmann::json statistics_json(const ES::Mesh_statistics& s)
+{
+  return {{"vertices", s.vertices}, {"edges", s.edges}, {"faces", s.faces}, {"cells", s.cells},
+          {"min_dihedral_angle", s.min_dihedral_angle}, {"max_dihedral_angle", s.max_dihedral_angle}};
+}
+
+inline ES::Swap_report run_criterion(Triangulation& tr, const std::string& name, ES::Perturbation perturbation,
+                                     const ES::Swap_options& options)
+{
+  if(name == "delaunay") return CGAL::swap_edges(tr, ES::Delaunay_criterion(perturbation), options);
+  if(name == "minmax-dihedral") return CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(), options);
+  if(name == "maxmin-dihedral") return CGAL::swap_edges(tr, ES::Max_min_dihedral_angle_criterion(), options);
+  if(name == "min-edges") return CGAL::swap_edges(tr, ES::Min_edges_criterion(), options);
+  if(name == "aspect-ratio") return CGAL::swap_edges(tr, ES::Aspect_ratio_criterion(), options);
+  throw Usage_error("unknown --criterion '" + name + "'");
+}
+
+inline int run_optimize(const Optimize_options& o)
+{
+  // Every option is checked before any work, and nothing is written before the end.
+  if(!ends_with(o.output, ".ele")) throw Usage_error("the output must be an .ele file: '" + o.output + "'");
+  if(o.helper && o.criterion != "delaunay")
+    throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
+  if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
+  if(o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
+
+  Input in = read_input(o.input);
+  Triangulation tr;
+  if(in.is_mesh)
+  {
+    if(o.start_given) throw Usage_error("--start applies to a .node input; an .ele input is its own start");
+    const std::string problem = build_mesh(tr, in);
+    if(!problem.empty()) throw IO::Input_error(o.input + ": " + problem);
+  }
+  else
+  {
+    require_valid_point_set(in, o.input);
+    build_start(tr, in, o.start, o.seed);
+  }
+
+  const ES::Mesh_statistics before = ES::mesh_statistics(tr);
+  ES::Swap_options options;
+  options.face_order = (o.order == "random") ? ES::RANDOM_ORDER : ES::STORAGE_ORDER;
+  options.random_seed = o.seed;
+  options.max_cycles = o.max_cycles;
+  options.perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
+  options.record_non_delaunay_facets = !o.history.empty();
+  options.cycle_visitor = cycle_progress(o.helper ? "helper" : o.criterion);
+
+  const ES::Swap_report report = o.helper ? CGAL::swap_edges_with_helper(tr, options)
+                                          : run_criterion(tr, o.criterion, options.perturbation, options);
+  const ES::Mesh_statistics after = ES::mesh_statistics(tr);
+
+  Atomic_files files;
+  add_mesh_files(files, o.output, tr, in);
+  if(!o.history.empty())
+    files.add(o.history, [&report](std::ostream& out) {
+      out << "cycle,swaps_2_3,swaps_3_2,swaps_2_2,swaps_4_4,cells,non_delaunay_faces\n";
+      for(const auto& r : report.cycles)
+        out << r.cycle << ',' << r.swaps[0] << ',' << r.swaps[1] << ',' << r.swaps[2] << ',' << r.swaps[3]
+            << ',' << r.cells << ',' << r.non_delaunay_facets << '\n';
+    });
+  if(!o.stats.empty())
+    files.add(o.stats, [&](std::ostream& out) {
+      const auto t = report.total_swaps();
+      nlohmann::json j = {{"before", statistics_json(before)},
+                          {"after", statistics_json(after)},
+                          {"strategy", o.helper ? "helper" : o.criterion},
+                          {"ending", ES::swap_ending_name(report.ending)},
+                          {"cycles", report.number_of_cycles()},
+                          {"swaps", {{"2-3", t[0]}, {"3-2", t[1]}, {"2-2", t[2]}, {"4-4", t[3]}}},
+                          {"non_delaunay_faces", report.non_delaunay_facets},
+                          {"seconds", report.seconds}};
+      out << j.dump(2) << '\n';
+    });
+  files.commit();
+
+  const auto t = report.total_swaps();
+  std::cout << (o.helper ? "helper" : o.criterion) << ": " << ES::swap_ending_name(report.ending) << " after "
+            << report.number_of_cycles() << " cycles; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
+            << t[2] << ", 4-4 " << t[3] << "; cells " << before.cells << " -> " << after.cells << "; "
+            << report.seconds << " s\n";
+  return 0;
+}
+
+} // namespace edge_swap
+
+#endif
