@@ -23,7 +23,7 @@ int main(int argc, char** argv)
   optimize->add_option("--order", opt.order, "face order: storage|random");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
   optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none");
-  optimize->add_option("--max-cycles", opt.max_cycles, "cycle limit");
+  optimize->add_option("--max-cycles", opt.max_cycles, "cycle limit")->check(CLI::PositiveNumber);
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 
@@ -34,7 +34,7 @@ int main(int argc, char** argv)
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
   auto* demo = app.add_subcommand("demo", "helper strategy to CGAL's Delaunay, then the paper's minimum-edge table");
-  demo->add_option("--points", demo_points, "number of random points");
+  demo->add_option("--points", demo_points, "number of random points")->check(CLI::Range(4, 100000000));
   demo->add_option("--seed", demo_seed, "random seed");
 
   try

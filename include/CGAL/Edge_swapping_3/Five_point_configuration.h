@@ -187,6 +187,17 @@ void flip(Tr& tr, const Five_point_configuration<Tr>& conf)
   flip(tr, conf, created);
 }
 
+/// Swaps the configuration of facet `(c, i)` into its alternative if it has one.
+/// Returns false, leaving `tr` untouched, for an unswappable configuration.
+template <class Tr>
+bool flip_facet(Tr& tr, typename Tr::Cell_handle c, int i)
+{
+  const auto conf = classify_facet(tr, c, i);
+  if(!conf.is_swappable()) return false;
+  flip(tr, conf);
+  return true;
+}
+
 } // namespace Edge_swapping_3
 } // namespace CGAL
 

@@ -56,18 +56,22 @@ insert_by_placing(Tr& tr, const std::vector<typename Tr::Point>& points,
 }
 
 /// Makes the empty `tr` CGAL's Delaunay triangulation of `points` (built by
-/// Delaunay_triangulation_3 on the same data structure, then swapped in).
+/// Delaunay_triangulation_3 on the same data structure, then moved in).
 /// Returns the vertex of each point.
-template <class Gt, class Tds>
-std::vector<typename Tds::Vertex_handle>
-insert_delaunay(CGAL::Triangulation_3<Gt, Tds>& tr, const std::vector<typename Gt::Point_3>& points)
+template <class Tr>
+std::vector<typename Tr::Vertex_handle> insert_delaunay(Tr& tr, const std::vector<typename Tr::Point>& points)
 {
-  CGAL::Delaunay_triangulation_3<Gt, Tds> dt;
-  std::vector<typename Tds::Vertex_handle> vertices(points.size());
-  typename Tds::Vertex_handle hint;
+  typedef typename Tr::Geom_traits Gt;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  CGAL::Delaunay_triangulation_3<Gt, typename Tr::Triangulation_data_structure> dt;
+  std::vector<Vertex_handle> vertices(points.size());
+  Vertex_handle hint;
   for(std::size_t k : internal::insertion_sequence<Gt>(points, SPATIAL_ORDER))
-    hint = vertices[k] = dt.insert(points[k], hint == typename Tds::Vertex_handle() ? typename Tds::Cell_handle() : hint->cell());
-  tr.swap(dt);
+    hint = vertices[k] = dt.insert(points[k], hint == Vertex_handle() ? typename Tr::Cell_handle() : hint->cell());
+  const Vertex_handle infinite = tr.infinite_vertex();
+  tr.tds().swap(dt.tds());
+  tr.set_infinite_vertex(dt.infinite_vertex());
+  dt.set_infinite_vertex(infinite);
   return vertices;
 }
 

@@ -59,6 +59,10 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     if(!used[v]) return "point " + std::to_string(v) + " is not a vertex of any tetrahedron";
 
   auto& tds = tr.tds();
+  // An empty Triangulation_3 (dimension -1) holds one cell for its infinite vertex.
+  std::vector<Cell_handle> initial;
+  for(auto it = tds.cells().begin(); it != tds.cells().end(); ++it) initial.push_back(it);
+  for(Cell_handle c : initial) tds.delete_cell(c);
   tds.set_dimension(3);
   vertices.resize(points.size());
   for(std::size_t v = 0; v < points.size(); ++v)
@@ -144,7 +148,8 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   // Convex boundary: no vertex beyond the hull facet next to it.
   for(auto c : tr.all_cell_handles())
   {
-    const int i = c->index(inf);
+    int i;
+    if(!c->has_vertex(inf, i)) continue;
     for(int m = 0; m < 4; ++m)
     {
       if(m == i) continue;

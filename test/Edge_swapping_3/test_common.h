@@ -1,0 +1,172 @@
+// Shared by the tests: the triangulation type, input families drawn from a
+// printed seed, and exact comparisons of cell sets and volumes.
+
+#ifndef EDGE_SWAPPING_3_TEST_COMMON_H
+#define EDGE_SWAPPING_3_TEST_COMMON_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Triangulation_3.h>
+#include <CGAL/edge_swapping_3.h>
+#include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace test {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Triangulation_3<K> Tr;
+namespace ES = CGAL::Edge_swapping_3;
+
+typedef std::array<Point, 4> Cell_points;
+
+/// The finite cells as sorted point quadruples: equal sets mean equal triangulations.
+inline std::vector<Cell_points> cell_set(const Tr& tr)
+{
+  std::vector<Cell_points> cells;
+  auto less = [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; };
+  for(auto c : tr.finite_cell_handles())
+  {
+    Cell_points p = {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()};
+    std::sort(p.begin(), p.end(), less);
+    cells.push_back(p);
+  }
+  std::sort(cells.begin(), cells.end(), [&](const Cell_points& a, const Cell_points& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+  });
+  return cells;
+}
+
+/// The exact total volume of the finite cells (coordinates are doubles, so rationals are exact).
+inline CGAL::Exact_rational exact_volume(const Tr& tr)
+{
+  typedef CGAL::Exact_rational Q;
+  Q total = 0;
+  for(auto c : tr.finite_cell_handles())
+  {
+    Q m[3][3];
+    const Point& o = c->vertex(0)->point();
+    for(int i = 0; i < 3; ++i)
+    {
+      const Point& p = c->vertex(i + 1)->point();
+      m[i][0] = Q(p.x()) - Q(o.x());
+      m[i][1] = Q(p.y()) - Q(o.y());
+      m[i][2] = Q(p.z()) - Q(o.z());
+    }
+    total += m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  }
+  return total / 6;
+}
+
+// --- Input families. Every random one is drawn from `seed`, which the tests print.
+
+inline std::vector<Point> random_in_cube(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), r.get_double());
+  return p;
+}
+
+inline std::vector<Point> random_in_ball(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  while(p.size() < n)
+  {
+    const double x = r.get_double(-1, 1), y = r.get_double(-1, 1), z = r.get_double(-1, 1);
+    if(x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
+  }
+  return p;
+}
+
+inline std::vector<Point> grid(int nx, int ny, int nz)
+{
+  std::vector<Point> p;
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j)
+      for(int k = 0; k < nz; ++k) p.emplace_back(i, j, k);
+  return p;
+}
+
+/// Integer points exactly on the sphere x^2 + y^2 + z^2 = r2: all cospherical.
+inline std::vector<Point> cospherical(int r2)
+{
+  std::vector<Point> p;
+  const int r = int(std::sqrt(double(r2))) + 1;
+  for(int x = -r; x <= r; ++x)
+    for(int y = -r; y <= r; ++y)
+      for(int z = -r; z <= r; ++z)
+        if(x * x + y * y + z * z == r2) p.emplace_back(x, y, z);
+  return p;
+}
+
+/// Random integer points on a few parallel planes: many coplanar and cocircular subsets.
+inline std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  while(p.size() < n)
+  {
+    Point q(r.get_int(0, 20), r.get_int(0, 20), r.get_int(0, planes));
+    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
+  }
+  return p;
+}
+
+/// Tight clusters around a few centres.
+inline std::vector<Point> clustered(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> centres;
+  for(int k = 0; k < 5; ++k) centres.emplace_back(r.get_double(), r.get_double(), r.get_double());
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const Point& c = centres[k % centres.size()];
+    p.emplace_back(c.x() + 1e-3 * r.get_double(), c.y() + 1e-3 * r.get_double(), c.z() + 1e-3 * r.get_double());
+  }
+  return p;
+}
+
+/// Nearly flat: a unit square, 1e-6 thick.
+inline std::vector<Point> nearly_flat(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), 1e-6 * r.get_double());
+  return p;
+}
+
+struct Family
+{
+  std::string name;
+  std::vector<Point> points;
+};
+
+/// The degenerate and random families of the exactness tests, for one seed.
+inline std::vector<Family> families(unsigned seed)
+{
+  return {{"cube 5", random_in_cube(5, seed)},
+          {"cube 300", random_in_cube(300, seed)},
+          {"ball 500", random_in_ball(500, seed)},
+          {"grid 2x2x2", grid(2, 2, 2)},
+          {"grid 3x4x5", grid(3, 4, 5)},
+          {"grid 6x6x6", grid(6, 6, 6)},
+          {"cospherical 50", cospherical(50)},
+          {"cospherical 27 + centre", [] { auto p = cospherical(27); p.emplace_back(0, 0, 0); return p; }()},
+          {"planes 200", on_planes(200, 3, seed)},
+          {"clustered 400", clustered(400, seed)},
+          {"nearly flat 300", nearly_flat(300, seed)}};
+}
+
+} // namespace test
+
+#endif

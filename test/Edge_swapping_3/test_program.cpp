@@ -1,0 +1,272 @@
+// The edge_swap program, run as a user would: every bad input or option gives
+// exit 2, a message that names the problem, and no output file at all.
+
+#include "test_common.h"
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+using namespace test;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run
+{
+  int exit_code;
+  std::string out, err;
+};
+
+class Workdir
+{
+public:
+  Workdir()
+  {
+    static int counter = 0;
+    dir_ = fs::temp_directory_path() / ("edge_swap_test_" + std::to_string(::getpid()) + "_" + std::to_string(++counter));
+    fs::create_directories(dir_);
+  }
+  ~Workdir() { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  void write(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
+
+  static std::string slurp(const std::string& p)
+  {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  Run run(const std::string& args) const
+  {
+    const std::string cmd = std::string(EDGE_SWAP_BINARY) + " " + args + " > " + path("stdout") + " 2> " + path("stderr");
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
+  }
+
+  /// Files in the directory other than the inputs and the captured streams.
+  std::size_t outputs(const std::vector<std::string>& inputs) const
+  {
+    std::size_t n = 0;
+    for(const auto& e : fs::directory_iterator(dir_))
+    {
+      const std::string name = e.path().filename().string();
+      if(name == "stdout" || name == "stderr") continue;
+      if(std::find(inputs.begin(), inputs.end(), name) == inputs.end()) ++n;
+    }
+    return n;
+  }
+
+private:
+  fs::path dir_;
+};
+
+const std::string cube_node = "# the corners of a unit cube\n8 3 0 0\n"
+                              "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 0 0 1\n6 1 0 1\n7 0 1 1\n8 1 1 1\n";
+
+// Runs optimize on a .node text and expects a clean rejection naming `what`.
+void expect_rejected_node(const std::string& node_text, const std::string& what)
+{
+  Workdir w;
+  w.write("in.node", node_text);
+  const Run r = w.run("optimize " + w.path("in.node") + " -o " + w.path("out.ele") + " --history " +
+                      w.path("h.csv") + " --stats " + w.path("s.json"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find(what) != std::string::npos);
+  REQUIRE(w.outputs({"in.node"}) == 0);
+}
+
+// Runs optimize and check on an .ele mesh (with the cube's .node).
+void expect_rejected_mesh(const std::string& ele_text, const std::string& what)
+{
+  Workdir w;
+  w.write("in.node", cube_node);
+  w.write("in.ele", ele_text);
+  const Run r = w.run("optimize " + w.path("in.ele") + " -o " + w.path("out.ele"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find(what) != std::string::npos);
+  REQUIRE(w.outputs({"in.node", "in.ele"}) == 0);
+  const Run c = w.run("check " + w.path("in.ele"));
+  INFO("check stdout: " << c.out << " stderr: " << c.err);
+  REQUIRE((c.exit_code == 1 || c.exit_code == 2));
+}
+
+} // namespace
+
+TEST_CASE("Bad point sets are rejected with exit 2 - a message and no output", "[program]")
+{
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 nan 0\n4 0 0 1\n", "not finite");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 inf 0\n4 0 0 1\n", "not finite");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1e999 0\n4 0 0 1\n", "not finite");
+  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 0 0\n", "duplicate points: point 1 and point 4");
+  expect_rejected_node("3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n", "fewer than four points");
+  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 2 3 0\n", "coplanar");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n", "collinear");
+}
+
+TEST_CASE("Malformed and inconsistent .node files are rejected", "[program]")
+{
+  expect_rejected_node("", "empty file");
+  expect_rejected_node("4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n", "dimension is 2");
+  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n", "the file ends after 4 of 5 points");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n", "more lines than");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 zero 0\n3 0 1 0\n4 0 0 1\n", "cannot read a coordinate");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n3 1 0 0\n2 0 1 0\n4 0 0 1\n", "out of sequence");
+  expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0\n", "missing a coordinate");
+  expect_rejected_node("4 3 0 0\n1 0 0 0 7\n2 1 0 0\n3 0 1 0\n4 0 0 1\n", "unexpected '7'");
+}
+
+TEST_CASE("Inverted - non-conforming and inconsistent meshes are rejected", "[program]")
+{
+  expect_rejected_mesh("1 4 0\n1 1 2 3 9\n", "not a point of the .node file");
+  expect_rejected_mesh("2 4 0\n1 1 2 3 5\n", "the file ends after 1 of 2 tetrahedra");
+  expect_rejected_mesh("1 4 0\n1 1 2 3 4\n", "flat");                         // four coplanar corners
+  expect_rejected_mesh("1 4 0\n1 1 2 3 5\n", "is not a vertex of any tetrahedron"); // covers a corner only
+  expect_rejected_mesh("1 10 0\n1 1 2 3 5 6 7 8 4 1 2\n", "only linear tetrahedra");
+}
+
+TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are rejected", "[program]")
+{
+  const std::vector<Point> corners = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0),
+                                      Point(0, 0, 1), Point(1, 0, 1), Point(0, 1, 1), Point(1, 1, 1)};
+  // Start from CGAL's triangulation of the cube corners and spoil it.
+  Tr dt;
+  ES::insert_delaunay(dt, corners);
+  std::vector<std::array<std::size_t, 4>> cells;
+  auto index = [&](const Point& p) { return std::size_t(std::find(corners.begin(), corners.end(), p) - corners.begin()); };
+  for(auto c : dt.finite_cell_handles())
+    cells.push_back({index(c->vertex(0)->point()), index(c->vertex(1)->point()), index(c->vertex(2)->point()),
+                     index(c->vertex(3)->point())});
+  std::vector<Tr::Vertex_handle> vertices;
+  {
+    Tr tr;
+    REQUIRE(ES::build_triangulation_from_cells(tr, corners, cells, vertices).empty());
+    REQUIRE(ES::compare_with_delaunay(tr).identical);
+  }
+  {
+    auto bad = cells;
+    std::swap(bad[1][0], bad[1][1]);
+    Tr tr;
+    REQUIRE(ES::build_triangulation_from_cells(tr, corners, bad, vertices).find("inverted") != std::string::npos);
+    REQUIRE(tr.number_of_vertices() == 0);
+  }
+  {
+    auto bad = cells;
+    for(auto& t : bad) std::swap(t[0], t[1]); // all reversed: a consistent other convention, accepted
+    Tr tr;
+    REQUIRE(ES::build_triangulation_from_cells(tr, corners, bad, vertices).empty());
+  }
+  {
+    auto bad = cells;
+    bad.push_back(bad.front()); // a facet shared by more than two tetrahedra
+    Tr tr;
+    const std::string why = ES::build_triangulation_from_cells(tr, corners, bad, vertices);
+    REQUIRE((why.find("more than two") != std::string::npos || why.find("repeated") != std::string::npos));
+  }
+  {
+    // Remove a corner tetrahedron touching the hull: the boundary is no longer convex
+    // (or a point is left out).
+    for(std::size_t k = 0; k < cells.size(); ++k)
+    {
+      auto bad = cells;
+      bad.erase(bad.begin() + std::ptrdiff_t(k));
+      Tr tr;
+      const std::string why = ES::build_triangulation_from_cells(tr, corners, bad, vertices);
+      INFO("without tetrahedron " << k << ": " << why);
+      REQUIRE_FALSE(why.empty());
+    }
+  }
+  {
+    // Overlap: a tetrahedron and its mirror image through a shared facet pointing the same way.
+    const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(1, 1, 1)};
+    Tr tr;
+    const std::string why = ES::build_triangulation_from_cells(tr, p, {{0, 1, 2, 3}, {0, 1, 2, 4}}, vertices);
+    REQUIRE_FALSE(why.empty());
+  }
+}
+
+TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
+{
+  Workdir w;
+  w.write("cube.node", cube_node);
+  const std::string in = w.path("cube.node"), out = " -o " + w.path("out.ele");
+  for(const std::string& args : std::vector<std::string>
+      {"optimize " + in + out + " --criterion fastest", "optimize " + in + out + " --criterion minmax-dihedral --helper",
+       "optimize " + in + out + " --start sideways", "optimize " + in + out + " --start scramble:x",
+       "optimize " + in + out + " --order backwards", "optimize " + in + out + " --perturb maybe",
+       "optimize " + in + " -o " + w.path("out.mesh"), "optimize " + in + out + " --max-cycles -3",
+       "optimize " + w.path("missing.node") + out, "optimize " + w.path("cube.txt") + out, "frobnicate",
+       "check " + w.path("missing.ele"), "check " + in})
+  {
+    INFO("edge_swap " << args);
+    const Run r = w.run(args);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE_FALSE(r.err.empty());
+    REQUIRE(w.outputs({"cube.node"}) == 0);
+  }
+}
+
+TEST_CASE("optimize writes a mesh that reads back exactly - and check agrees", "[program]")
+{
+  Workdir w;
+  // Coordinates that need 17 digits to read back.
+  std::ostringstream node;
+  node.precision(17);
+  const auto points = random_in_ball(300, 11);
+  node << points.size() << " 3 1 0\n";
+  for(std::size_t k = 0; k < points.size(); ++k)
+    node << k << ' ' << points[k].x() << ' ' << points[k].y() << ' ' << points[k].z() << ' ' << 0.5 * double(k) << '\n';
+  w.write("ball.node", node.str());
+
+  Run r = w.run("optimize " + w.path("ball.node") + " -o " + w.path("out.ele") + " --helper --order random --seed 3 "
+                "--history " + w.path("h.csv") + " --stats " + w.path("s.json"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto back = CGAL::Edge_swapping_3::IO::read_node_file(w.path("out.node"));
+  REQUIRE(back.first_index == 0);
+  REQUIRE(back.points.size() == points.size());
+  for(std::size_t k = 0; k < points.size(); ++k)
+  {
+    REQUIRE(back.points[k][0] == points[k].x());
+    REQUIRE(back.points[k][1] == points[k].y());
+    REQUIRE(back.points[k][2] == points[k].z());
+    REQUIRE(back.attributes[k][0] == 0.5 * double(k)); // attributes are carried through
+  }
+  REQUIRE(Workdir::slurp(w.path("h.csv")).rfind("cycle,swaps_2_3,", 0) == 0);
+  REQUIRE(Workdir::slurp(w.path("s.json")).find("\"ending\": \"converged\"") != std::string::npos);
+
+  r = w.run("check " + w.path("out.ele"));
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("equal to CGAL's Delaunay triangulation: yes") != std::string::npos);
+
+  // A placing start, optimized by another criterion, is valid but not Delaunay.
+  r = w.run("optimize " + w.path("ball.node") + " -o " + w.path("minmax.ele") + " --criterion minmax-dihedral");
+  REQUIRE(r.exit_code == 0);
+  r = w.run("check " + w.path("minmax.ele"));
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("valid triangulation") != std::string::npos);
+
+  // An .ele input is optimized in place of a start triangulation.
+  r = w.run("optimize " + w.path("minmax.ele") + " -o " + w.path("again.ele") + " --criterion delaunay --perturb none");
+  REQUIRE(r.exit_code == 0);
+  r = w.run("optimize " + w.path("minmax.ele") + " -o " + w.path("x.ele") + " --start delaunay");
+  REQUIRE(r.exit_code == 2);
+}
+
+TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[program]")
+{
+  Workdir w;
+  const Run r = w.run("demo --points 1500 --seed 2");
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("cell for cell: yes") != std::string::npos);
+  REQUIRE(r.out.find("Cells") != std::string::npos);
+  REQUIRE(r.out.find("52800") != std::string::npos);
+}
