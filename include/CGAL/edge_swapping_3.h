@@ -30,6 +30,10 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 {
   using namespace Edge_swapping_3;
   auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](typename Tr::Cell_handle c, int i) {
+    // The exact in-sphere test is cheaper than the classification, and most
+    // facets pass it: for Delaunay, only a failing facet is classified.
+    if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
+      if(is_locally_delaunay(tr, c, i, criterion.perturbation)) return -1;
     const auto conf = classify_facet(tr, c, i);
     if(!conf.is_swappable() || !criterion(tr, conf)) return -1;
     flip(tr, conf);
@@ -58,8 +62,14 @@ Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
   std::array<Cell_handle, 4> created;
 
   auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](Cell_handle c, int i) {
+    // A Delaunay facet between two untagged cells is skipped unclassified: a
+    // swappable configuration with a tagged cell is also reached through a
+    // facet of that cell, so no help is lost, only deferred.
+    const bool delaunay = is_locally_delaunay(tr, c, i, options.perturbation);
+    if(delaunay && (tagged.empty() || (tagged.count(c) == 0 && tagged.count(c->neighbor(i)) == 0)))
+      return -1;
     const auto conf = classify_facet(tr, c, i);
-    if(!is_locally_delaunay(tr, c, i, options.perturbation))
+    if(!delaunay)
       for(int k = 0; k < conf.number_of_tetrahedra(); ++k) tagged.insert(conf.tetrahedron(k));
     if(!conf.is_swappable() || tagged.empty()) return -1;
     const auto& plan = conf.flip_plan();

@@ -122,10 +122,10 @@ TEST_CASE("Finding: in storage face order the helper strategy can cycle (fixture
   {
     REQUIRE(require_periodic_cycle(fixture_points("helper_storage_order_cycle_300.node")) == 2);
   }
-  SECTION("grid 9x9x9")
+  SECTION("grid 11x11x11")
   {
     // No short period here: storage order also depends on where flips put cells.
-    require_periodic_cycle(grid(9, 9, 9));
+    require_periodic_cycle(grid(11, 11, 11));
   }
 }
 

@@ -1,7 +1,9 @@
 // One cycle's list of interior facets. A flip reuses or frees cells, so a facet
-// is kept as its cell and its three vertices and found again when its turn
-// comes: the cell is checked in O(1) (still in use, still holding the three
-// vertices), else the facet is looked up around its first vertex.
+// is kept as its two cells and its three vertices and found again when its
+// turn comes, in those cells or their neighbours (O(1) checks). A facet that
+// is not there was destroyed by a flip (or destroyed and made again): like
+// every facet a flip creates, it waits for the next cycle. A cycle that makes
+// no swap therefore still visits every facet, so the endings are exact.
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_FACET_SWEEP_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_FACET_SWEEP_H
@@ -17,7 +19,7 @@ namespace internal {
 template <class Tr>
 struct Facet_key
 {
-  typename Tr::Cell_handle cell;
+  typename Tr::Cell_handle cell, other;
   typename Tr::Vertex_handle u, v, w;
 };
 
@@ -38,28 +40,33 @@ void collect_interior_facets(const Tr& tr, Face_order order, CGAL::Random& rng,
       if(tr.is_infinite(n)) continue;
       const auto m = n->vertex(n->index(c));
       if(compare_xyz(c->vertex(i)->point(), m->point()) != SMALLER) continue;
-      out.push_back({c, c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)});
+      out.push_back({c, n, c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)});
     }
   if(order == RANDOM_ORDER)
     for(std::size_t k = out.size(); k > 1; --k)
       std::swap(out[k - 1], out[std::size_t(rng.get_int(0, int(k)))]);
 }
 
-/// Finds the facet again; false if it no longer exists.
+/// Finds the facet again in the cells it was between or their neighbours;
+/// false if it is not there (see above).
 template <class Tr>
 bool find_facet(const Tr& tr, const Facet_key<Tr>& key, typename Tr::Cell_handle& c, int& i)
 {
-  c = key.cell;
-  int a, b, d;
-  if(tr.tds().cells().is_used(c) && c->has_vertex(key.u, a) && c->has_vertex(key.v, b) &&
-     c->has_vertex(key.w, d))
-  {
-    i = 6 - a - b - d;
+  auto holds = [&](typename Tr::Cell_handle d) {
+    int a, b, e;
+    if(!d->has_vertex(key.u, a) || !d->has_vertex(key.v, b) || !d->has_vertex(key.w, e)) return false;
+    c = d;
+    i = 6 - a - b - e;
     return true;
-  }
-  if(!tr.is_facet(key.u, key.v, key.w, c, a, b, d)) return false;
-  i = 6 - a - b - d;
-  return true;
+  };
+  const auto& cells = tr.tds().cells();
+  for(auto d : {key.cell, key.other})
+    if(cells.is_used(d) && holds(d)) return true;
+  for(auto d : {key.cell, key.other})
+    if(cells.is_used(d))
+      for(int k = 0; k < 4; ++k)
+        if(holds(d->neighbor(k))) return true;
+  return false;
 }
 
 } // namespace internal

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Edge_swapping_3 needs, only those missing.
+# Run as root on Debian 12 (apt-get). Called by the two README commands.
+set -euo pipefail
+
+packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev catch2 libcli11-dev nlohmann-json3-dev)
+# The benchmarks compare with TetGen when it is there.
+packages+=(tetgen)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
