@@ -13,9 +13,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Swap_options.h>
 #include <CGAL/Edge_swapping_3/internal/cycle_driver.h>
-#include <CGAL/Handle_hash_function.h>
 #include <type_traits>
-#include <unordered_set>
 
 namespace CGAL {
 
@@ -51,14 +49,16 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 /// a configuration that is not Delaunay tags its tetrahedra; a swappable
 /// configuration with a tagged tetrahedron is swapped, Delaunay or not, which
 /// lets a non-Delaunay concave configuration out of a local optimum.
-/// Tags live on cells: a flip removes the tags of the cells it replaces.
+/// A tag lives on its cell until a flip replaces the cell. Tags are kept in the
+/// cells' TDS mark (`tds_data()`, which CGAL's own operations clear after use),
+/// and all marks are clear again when the function returns.
 template <class Tr>
 Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
                                                     const Edge_swapping_3::Swap_options& options = {})
 {
   using namespace Edge_swapping_3;
   typedef typename Tr::Cell_handle Cell_handle;
-  std::unordered_set<Cell_handle, CGAL::Handle_hash_function> tagged;
+  auto tagged = [](Cell_handle c) { return c->tds_data().is_in_conflict(); };
   std::array<Cell_handle, 4> created;
 
   auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](Cell_handle c, int i) {
@@ -66,21 +66,20 @@ Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
     // swappable configuration with a tagged cell is also reached through a
     // facet of that cell, so no help is lost, only deferred.
     const bool delaunay = is_locally_delaunay(tr, c, i, options.perturbation);
-    if(delaunay && (tagged.empty() || (tagged.count(c) == 0 && tagged.count(c->neighbor(i)) == 0)))
+    if(delaunay && !tagged(c) && !tagged(c->neighbor(i)))
       return -1;
     const auto conf = classify_facet(tr, c, i);
     if(!delaunay)
-      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) tagged.insert(conf.tetrahedron(k));
-    if(!conf.is_swappable() || tagged.empty()) return -1;
+      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) conf.tetrahedron(k)->tds_data().mark_in_conflict();
+    if(!conf.is_swappable()) return -1;
     const auto& plan = conf.flip_plan();
     bool any_tagged = false;
-    for(int k = 0; k < plan.number_of_old_cells; ++k)
-      any_tagged = any_tagged || tagged.count(plan.old_cells[k]) > 0;
+    for(int k = 0; k < plan.number_of_old_cells; ++k) any_tagged = any_tagged || tagged(plan.old_cells[k]);
     if(!any_tagged) return -1;
-    for(int k = 0; k < plan.number_of_old_cells; ++k) tagged.erase(plan.old_cells[k]);
-    flip(tr, conf, created);
+    flip(tr, conf, created); // the new cells are untagged
     return int(conf.flip_kind());
   });
+  for(auto c : tr.all_cell_handles()) c->tds_data().clear();
   report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, options.perturbation);
   if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
   return report;

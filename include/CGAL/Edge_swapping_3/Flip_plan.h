@@ -173,6 +173,7 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
     {
       created[k] = plan.old_cells[k];
       created[k]->set_vertices(t[0], t[1], t[2], t[3]);
+      created[k]->tds_data().clear(); // a reused cell is a new cell: no mark (the helper's tag)
     }
     else
       created[k] = tds.create_cell(t[0], t[1], t[2], t[3]);

@@ -23,6 +23,30 @@ struct Facet_key
   typename Tr::Vertex_handle u, v, w;
 };
 
+/// A random permutation that keeps memory locality: the list is cut into
+/// blocks of neighbouring facets, the blocks are shuffled, and so is each block.
+template <class T>
+void shuffle_in_blocks(std::vector<T>& v, CGAL::Random& rng, std::size_t block = 512)
+{
+  auto shuffle = [&rng](auto first, std::size_t n) {
+    for(std::size_t k = n; k > 1; --k) std::swap(first[k - 1], first[std::size_t(rng.get_int(0, int(k)))]);
+  };
+  const std::size_t blocks = (v.size() + block - 1) / block;
+  std::vector<std::size_t> order(blocks);
+  for(std::size_t b = 0; b < blocks; ++b) order[b] = b;
+  shuffle(order.begin(), blocks);
+  std::vector<T> shuffled;
+  shuffled.reserve(v.size());
+  for(std::size_t b : order)
+  {
+    const std::size_t first = b * block, n = (std::min)(block, v.size() - first);
+    const std::size_t start = shuffled.size();
+    shuffled.insert(shuffled.end(), v.begin() + std::ptrdiff_t(first), v.begin() + std::ptrdiff_t(first + n));
+    shuffle(shuffled.begin() + std::ptrdiff_t(start), n);
+  }
+  v.swap(shuffled);
+}
+
 /// The interior facets of `tr`, each once, in storage order or shuffled.
 /// Of the two cells of a facet, the one whose opposite vertex is
 /// lexicographically smaller holds it: the choice never depends on addresses.
@@ -43,8 +67,7 @@ void collect_interior_facets(const Tr& tr, Face_order order, CGAL::Random& rng,
       out.push_back({c, n, c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)});
     }
   if(order == RANDOM_ORDER)
-    for(std::size_t k = out.size(); k > 1; --k)
-      std::swap(out[k - 1], out[std::size_t(rng.get_int(0, int(k)))]);
+    shuffle_in_blocks(out, rng);
 }
 
 /// Finds the facet again in the cells it was between or their neighbours;
