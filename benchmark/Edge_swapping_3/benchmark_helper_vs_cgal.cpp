@@ -1,6 +1,7 @@
 // Benchmark (not a test): the helper strategy from a placing start to the
 // Delaunay triangulation, beside CGAL's Delaunay_triangulation_3 and TetGen's
-// Delaunay on the same points in the same run. Prints one table row per size.
+// Delaunay on the same points, in one run. Each contender runs in a child
+// process of its own, so that its peak memory is its own.
 //
 //   benchmark_helper_vs_cgal [N ...]        (default: 100000 1000000)
 
@@ -12,10 +13,13 @@
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <cstdio>
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -23,27 +27,78 @@ typedef CGAL::Triangulation_3<K> Triangulation;
 typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
 namespace ES = CGAL::Edge_swapping_3;
 
-// TetGen's own "Delaunay seconds" on the points, or -1 if tetgen is not installed.
-double tetgen_seconds(const std::vector<K::Point_3>& points)
+// What a child measured, sent back through a pipe, and its peak memory.
+struct Measure
 {
-  if(std::system("command -v tetgen > /dev/null 2>&1") != 0) return -1;
-  const std::string stem = "/tmp/edge_swapping_3_bench_" + std::to_string(::getpid());
+  double values[6] = {-1, -1, -1, -1, -1, -1};
+  double peak_mib = -1;
+};
+
+// Runs `work` in a child process; `work` fills the values.
+Measure in_child(const std::function<void(double*)>& work)
+{
+  int fd[2];
+  if(pipe(fd) != 0) return {};
+  std::fflush(stdout); // else the child writes the parent's buffered lines again
+  const pid_t pid = fork();
+  if(pid == 0)
+  {
+    close(fd[0]);
+    Measure m;
+    work(m.values);
+    if(write(fd[1], m.values, sizeof m.values) != ssize_t(sizeof m.values)) _exit(1);
+    _exit(0);
+  }
+  close(fd[1]);
+  Measure m;
+  if(read(fd[0], m.values, sizeof m.values) != ssize_t(sizeof m.values)) m = Measure();
+  close(fd[0]);
+  int status = 0;
+  struct rusage usage;
+  if(wait4(pid, &status, 0, &usage) == pid) m.peak_mib = double(usage.ru_maxrss) / 1024.0;
+  return m;
+}
+
+std::vector<K::Point_3> random_points(std::size_t n)
+{
+  CGAL::Random rng(1);
+  std::vector<K::Point_3> points;
+  for(std::size_t k = 0; k < n; ++k) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
+  return points;
+}
+
+// TetGen's own "Delaunay seconds" on the points (file reading excluded), or -1.
+void tetgen(std::size_t n, double* out)
+{
+  if(std::system("command -v tetgen > /dev/null 2>&1") != 0) return;
+  const std::string stem =
+      (std::filesystem::temp_directory_path() / ("edge_swapping_3_bench_" + std::to_string(::getpid()))).string();
   {
     std::vector<std::array<double, 3>> p;
-    for(const auto& q : points) p.push_back({q.x(), q.y(), q.z()});
-    std::ofstream out(stem + ".node");
-    ES::IO::write_node_file(out, p, {}, 1);
+    for(const auto& q : random_points(n)) p.push_back({q.x(), q.y(), q.z()});
+    std::ofstream file(stem + ".node");
+    ES::IO::write_node_file(file, p, {}, 1);
   }
   const std::string log = stem + ".log";
-  const int status = std::system(("tetgen -V -N -E -F " + stem + ".node > " + log + " 2>&1").c_str());
-  double seconds = -1;
+  // exec, not system: the child's peak memory is then TetGen's.
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if(pid == 0)
+  {
+    if(!freopen(log.c_str(), "w", stdout)) _exit(1);
+    execlp("tetgen", "tetgen", "-V", "-N", "-E", "-F", (stem + ".node").c_str(), (char*)nullptr);
+    _exit(1);
+  }
+  int status = 0;
+  struct rusage usage;
+  wait4(pid, &status, 0, &usage);
   std::ifstream in(log);
   std::string line;
-  while(status == 0 && std::getline(in, line))
-    if(line.rfind("Delaunay seconds:", 0) == 0) seconds = std::stod(line.substr(17));
+  while(std::getline(in, line))
+    if(line.rfind("Delaunay seconds:", 0) == 0) out[0] = std::stod(line.substr(17));
+  out[1] = double(usage.ru_maxrss) / 1024.0;
   std::remove((stem + ".node").c_str());
   std::remove(log.c_str());
-  return seconds;
 }
 
 int main(int argc, char** argv)
@@ -52,43 +107,45 @@ int main(int argc, char** argv)
   for(int a = 1; a < argc; ++a) sizes.push_back(std::stoul(argv[a]));
   if(sizes.empty()) sizes = {100000, 1000000};
 
-  std::printf("%9s %9s %9s %9s %9s %7s %9s %9s %7s %s\n", "points", "CGAL s", "TetGen s", "placing s", "helper s",
-              "cycles", "swaps", "ours s", "ratio", "equal");
+  std::printf("%9s | %8s %8s | %8s %8s | %8s %8s %6s %9s %8s | %7s %7s %s\n", "points", "CGAL s", "MiB",
+              "TetGen s", "MiB", "place s", "helper s", "cycles", "swaps", "MiB", "t ratio", "m ratio", "equal");
   for(std::size_t n : sizes)
   {
-    CGAL::Random rng(1);
-    std::vector<K::Point_3> points;
-    for(std::size_t k = 0; k < n; ++k) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
-
-    CGAL::Real_timer t;
-    t.start();
-    Delaunay dt(points.begin(), points.end()); // CGAL spatially sorts the range
-    t.stop();
-    const double cgal = t.time();
-    dt.clear();
-
-    const double tetgen = tetgen_seconds(points);
-
-    Triangulation tr;
-    t.reset();
-    t.start();
-    ES::insert_by_placing(tr, points);
-    t.stop();
-    const double placing = t.time();
-
-    ES::Swap_options options;
-    options.face_order = ES::RANDOM_ORDER;
-    options.random_seed = 1;
-    options.cycle_visitor = [](const ES::Cycle_record& r) {
-      std::cerr << "  cycle " << r.cycle << ": " << r.total_swaps() << " swaps\n";
-    };
-    const ES::Swap_report report = CGAL::swap_edges_with_helper(tr, options);
-    const auto s = report.total_swaps();
-    const bool equal = ES::compare_with_delaunay(tr).identical; // not timed
-
-    const double ours = placing + report.seconds;
-    std::printf("%9zu %9.2f %9.2f %9.2f %9.2f %7zu %9zu %9.2f %7.1f %s\n", n, cgal, tetgen, placing, report.seconds,
-                report.number_of_cycles(), s[0] + s[1] + s[2] + s[3], ours, ours / cgal, equal ? "yes" : "NO");
+    const Measure cgal = in_child([n](double* out) {
+      const auto points = random_points(n);
+      CGAL::Real_timer t;
+      t.start();
+      Delaunay dt(points.begin(), points.end()); // CGAL spatially sorts the range
+      out[0] = t.time();
+    });
+    const Measure tet = in_child([n](double* out) { tetgen(n, out); });
+    const Measure ours = in_child([n](double* out) {
+      const auto points = random_points(n);
+      Triangulation tr;
+      CGAL::Real_timer t;
+      t.start();
+      ES::insert_by_placing(tr, points);
+      out[0] = t.time();
+      ES::Swap_options options; // random face order
+      options.random_seed = 1;
+      options.cycle_visitor = [](const ES::Cycle_record& r) {
+        std::cerr << "  cycle " << r.cycle << ": " << r.total_swaps() << " swaps\n";
+      };
+      const ES::Swap_report report = CGAL::swap_edges_with_helper(tr, options);
+      const auto s = report.total_swaps();
+      out[1] = report.seconds;
+      out[2] = double(report.number_of_cycles());
+      out[3] = double(s[0] + s[1] + s[2] + s[3]);
+      struct rusage usage;
+      getrusage(RUSAGE_SELF, &usage);
+      out[5] = double(usage.ru_maxrss) / 1024.0; // peak before the comparison, which builds CGAL's too
+      out[4] = ES::compare_with_delaunay(tr).identical ? 1 : 0; // not timed
+    });
+    const double ours_seconds = ours.values[0] + ours.values[1];
+    std::printf("%9zu | %8.2f %8.0f | %8.2f %8.0f | %8.2f %8.2f %6.0f %9.0f %8.0f | %7.1f %7.1f %s\n", n,
+                cgal.values[0], cgal.peak_mib, tet.values[0], tet.values[1], ours.values[0], ours.values[1],
+                ours.values[2], ours.values[3], ours.values[5], ours_seconds / cgal.values[0],
+                ours.values[5] / cgal.peak_mib, ours.values[4] == 1 ? "yes" : "NO");
     std::fflush(stdout);
   }
   return 0;

@@ -89,6 +89,7 @@ std::size_t require_periodic_cycle(const std::vector<Point>& points)
   Tr tr;
   ES::insert_by_placing(tr, points);
   ES::Swap_options options;
+  options.face_order = ES::STORAGE_ORDER;
   options.max_cycles = 300;
   std::vector<std::vector<Cell_points>> last;
   options.cycle_visitor = [&](const ES::Cycle_record& r) {

@@ -14,7 +14,7 @@ namespace edge_swap {
 
 struct Optimize_options
 {
-  std::string input, output, criterion = "delaunay", start = "placing", order = "storage";
+  std::string input, output, criterion = "delaunay", start = "placing", order = "random";
   std::string perturb = "cgal", history, stats;
   bool helper = false, start_given = false;
   unsigned int seed = 0;

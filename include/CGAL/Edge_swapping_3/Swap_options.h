@@ -33,7 +33,8 @@ struct Cycle_record
 
 struct Swap_options
 {
-  Face_order face_order = STORAGE_ORDER;
+  /// Random by default: in storage order the helper strategy can cycle (doc/Edge_swapping_3/findings.md).
+  Face_order face_order = RANDOM_ORDER;
   unsigned int random_seed = 0;
   /// The driver stops after this many cycles and reports CYCLE_LIMIT_REACHED.
   std::size_t max_cycles = 1000;

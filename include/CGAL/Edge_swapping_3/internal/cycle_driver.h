@@ -29,16 +29,18 @@ Swap_report run_cycles(Tr& tr, const Swap_options& options, Visit visit)
   {
     Cycle_record record;
     record.cycle = cycle;
-    collect_interior_facets(tr, options.face_order, rng, facets);
-    for(const auto& key : facets)
-    {
-      typename Tr::Cell_handle c;
-      int i;
-      if(!find_facet(tr, key, c, i)) continue;
-      if(tr.is_infinite(c) || tr.is_infinite(c->neighbor(i))) continue;
-      const int kind = visit(c, i);
-      if(kind >= 0) ++record.swaps[kind];
-    }
+    collect_interior_facets(tr, facets);
+    const std::size_t block = 512;
+    for(std::size_t b : visiting_blocks(facets, options.face_order, rng, block))
+      for(std::size_t k = b * block; k < (std::min)(facets.size(), (b + 1) * block); ++k)
+      {
+        typename Tr::Cell_handle c;
+        int i;
+        if(!find_facet(tr, facets[k], c, i)) continue;
+        if(tr.is_infinite(c) || tr.is_infinite(c->neighbor(i))) continue;
+        const int kind = visit(c, i);
+        if(kind >= 0) ++record.swaps[kind];
+      }
     record.cells = tr.number_of_finite_cells();
     if(options.record_non_delaunay_facets)
       record.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, options.perturbation);

@@ -23,36 +23,32 @@ struct Facet_key
   typename Tr::Vertex_handle u, v, w;
 };
 
-/// A random permutation that keeps memory locality: the list is cut into
-/// blocks of neighbouring facets, the blocks are shuffled, and so is each block.
+/// The order of a cycle's visit, as blocks of `block` neighbouring facets:
+/// in storage order, the blocks in order; in random order (a permutation that
+/// keeps memory locality), the blocks shuffled and each block shuffled in place.
 template <class T>
-void shuffle_in_blocks(std::vector<T>& v, CGAL::Random& rng, std::size_t block = 512)
+std::vector<std::size_t> visiting_blocks(std::vector<T>& facets, Face_order order, CGAL::Random& rng,
+                                         std::size_t block)
 {
   auto shuffle = [&rng](auto first, std::size_t n) {
     for(std::size_t k = n; k > 1; --k) std::swap(first[k - 1], first[std::size_t(rng.get_int(0, int(k)))]);
   };
-  const std::size_t blocks = (v.size() + block - 1) / block;
-  std::vector<std::size_t> order(blocks);
-  for(std::size_t b = 0; b < blocks; ++b) order[b] = b;
-  shuffle(order.begin(), blocks);
-  std::vector<T> shuffled;
-  shuffled.reserve(v.size());
-  for(std::size_t b : order)
+  std::vector<std::size_t> blocks((facets.size() + block - 1) / block);
+  for(std::size_t b = 0; b < blocks.size(); ++b) blocks[b] = b;
+  if(order == RANDOM_ORDER)
   {
-    const std::size_t first = b * block, n = (std::min)(block, v.size() - first);
-    const std::size_t start = shuffled.size();
-    shuffled.insert(shuffled.end(), v.begin() + std::ptrdiff_t(first), v.begin() + std::ptrdiff_t(first + n));
-    shuffle(shuffled.begin() + std::ptrdiff_t(start), n);
+    shuffle(blocks.begin(), blocks.size());
+    for(std::size_t b : blocks)
+      shuffle(facets.begin() + std::ptrdiff_t(b * block), (std::min)(block, facets.size() - b * block));
   }
-  v.swap(shuffled);
+  return blocks;
 }
 
-/// The interior facets of `tr`, each once, in storage order or shuffled.
+/// The interior facets of `tr`, each once, in storage order.
 /// Of the two cells of a facet, the one whose opposite vertex is
 /// lexicographically smaller holds it: the choice never depends on addresses.
 template <class Tr>
-void collect_interior_facets(const Tr& tr, Face_order order, CGAL::Random& rng,
-                             std::vector<Facet_key<Tr>>& out)
+void collect_interior_facets(const Tr& tr, std::vector<Facet_key<Tr>>& out)
 {
   out.clear();
   out.reserve(2 * tr.number_of_cells());
@@ -66,8 +62,6 @@ void collect_interior_facets(const Tr& tr, Face_order order, CGAL::Random& rng,
       if(compare_xyz(c->vertex(i)->point(), m->point()) != SMALLER) continue;
       out.push_back({c, n, c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)});
     }
-  if(order == RANDOM_ORDER)
-    shuffle_in_blocks(out, rng);
 }
 
 /// Finds the facet again in the cells it was between or their neighbours;
