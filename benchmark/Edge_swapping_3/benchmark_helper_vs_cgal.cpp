@@ -3,7 +3,7 @@
 // Delaunay on the same points, in one run. Each contender runs in a child
 // process of its own, so that its peak memory is its own.
 //
-//   benchmark_helper_vs_cgal [N ...]        (default: 100000 1000000)
+//   benchmark_helper_vs_cgal [--max-cycles C] [N ...]   (default: 1000 cycles; 100000 1000000)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -30,7 +30,7 @@ namespace ES = CGAL::Edge_swapping_3;
 // What a child measured, sent back through a pipe, and its peak memory.
 struct Measure
 {
-  double values[6] = {-1, -1, -1, -1, -1, -1};
+  double values[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
   double peak_mib = -1;
 };
 
@@ -104,11 +104,17 @@ void tetgen(std::size_t n, double* out)
 int main(int argc, char** argv)
 {
   std::vector<std::size_t> sizes;
-  for(int a = 1; a < argc; ++a) sizes.push_back(std::stoul(argv[a]));
+  std::size_t max_cycles = 1000;
+  for(int a = 1; a < argc; ++a)
+  {
+    if(std::string(argv[a]) == "--max-cycles" && a + 1 < argc) max_cycles = std::stoul(argv[++a]);
+    else sizes.push_back(std::stoul(argv[a]));
+  }
   if(sizes.empty()) sizes = {100000, 1000000};
 
-  std::printf("%9s | %8s %8s | %8s %8s | %8s %8s %6s %9s %8s | %7s %7s %s\n", "points", "CGAL s", "MiB",
-              "TetGen s", "MiB", "place s", "helper s", "cycles", "swaps", "MiB", "t ratio", "m ratio", "equal");
+  std::printf("%9s | %8s %8s | %8s %8s | %8s %8s %6s %9s %8s | %7s %7s | %-9s %7s %s\n", "points", "CGAL s", "MiB",
+              "TetGen s", "MiB", "place s", "helper s", "cycles", "swaps", "MiB", "t ratio", "m ratio", "ending",
+              "non-Del", "equal");
   for(std::size_t n : sizes)
   {
     const Measure cgal = in_child([n](double* out) {
@@ -119,7 +125,7 @@ int main(int argc, char** argv)
       out[0] = t.time();
     });
     const Measure tet = in_child([n](double* out) { tetgen(n, out); });
-    const Measure ours = in_child([n](double* out) {
+    const Measure ours = in_child([n, max_cycles](double* out) {
       const auto points = random_points(n);
       Triangulation tr;
       CGAL::Real_timer t;
@@ -128,24 +134,31 @@ int main(int argc, char** argv)
       out[0] = t.time();
       ES::Swap_options options; // random face order
       options.random_seed = 1;
-      options.cycle_visitor = [](const ES::Cycle_record& r) {
-        std::cerr << "  cycle " << r.cycle << ": " << r.total_swaps() << " swaps\n";
+      options.max_cycles = max_cycles;
+      CGAL::Real_timer clock;
+      clock.start();
+      options.cycle_visitor = [&clock](const ES::Cycle_record& r) {
+        std::cerr << "  cycle " << r.cycle << ": " << r.total_swaps() << " swaps, " << clock.time() << " s\n";
       };
       const ES::Swap_report report = CGAL::swap_edges_with_helper(tr, options);
       const auto s = report.total_swaps();
       out[1] = report.seconds;
       out[2] = double(report.number_of_cycles());
       out[3] = double(s[0] + s[1] + s[2] + s[3]);
+      out[6] = double(report.ending);
+      out[7] = double(report.non_delaunay_facets);
       struct rusage usage;
       getrusage(RUSAGE_SELF, &usage);
       out[5] = double(usage.ru_maxrss) / 1024.0; // peak before the comparison, which builds CGAL's too
       out[4] = ES::compare_with_delaunay(tr).identical ? 1 : 0; // not timed
     });
     const double ours_seconds = ours.values[0] + ours.values[1];
-    std::printf("%9zu | %8.2f %8.0f | %8.2f %8.0f | %8.2f %8.2f %6.0f %9.0f %8.0f | %7.1f %7.1f %s\n", n,
-                cgal.values[0], cgal.peak_mib, tet.values[0], tet.values[1], ours.values[0], ours.values[1],
-                ours.values[2], ours.values[3], ours.values[5], ours_seconds / cgal.values[0],
-                ours.values[5] / cgal.peak_mib, ours.values[4] == 1 ? "yes" : "NO");
+    const int ending = int(ours.values[6]);
+    std::printf("%9zu | %8.2f %8.0f | %8.2f %8.0f | %8.2f %8.2f %6.0f %9.0f %8.0f | %7.1f %7.1f | %-9s %7.0f %s\n", n,
+                cgal.values[0], cgal.peak_mib, tet.values[0], tet.values[1], ours.values[0], ours.values[1], ours.values[2],
+                ours.values[3], ours.values[5], ours_seconds / cgal.values[0], ours.values[5] / cgal.peak_mib,
+                ending == ES::CONVERGED ? "converged" : ending == ES::STUCK ? "stuck" : "limit", ours.values[7],
+                ours.values[4] == 1 ? "yes" : "no");
     std::fflush(stdout);
   }
   return 0;

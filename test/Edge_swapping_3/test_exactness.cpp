@@ -31,7 +31,7 @@ void require_equal_to_cgal(const Tr& tr, const ES::Swap_report& report)
 
 TEST_CASE("Helper strategy from placing starts equals CGAL's Delaunay triangulation", "[exactness][helper]")
 {
-  for(unsigned seed = 1; seed <= 5; ++seed)
+  for(unsigned seed = 1; seed <= 10; ++seed)
     for(const auto& family : families(seed))
       for(auto order : {ES::SPATIAL_ORDER, ES::INPUT_ORDER})
       {
@@ -46,7 +46,7 @@ TEST_CASE("Helper strategy from placing starts equals CGAL's Delaunay triangulat
 
 TEST_CASE("Helper strategy from scrambled Delaunay starts equals CGAL's", "[exactness][helper]")
 {
-  for(unsigned seed = 1; seed <= 5; ++seed)
+  for(unsigned seed = 1; seed <= 10; ++seed)
     for(const auto& family : families(seed))
     {
       INFO("family " << family.name << ", seed " << seed);
