@@ -116,7 +116,7 @@ inline void add_mesh_files(Atomic_files& files, const std::string& ele_path, con
   files.add(stem(ele_path) + ".node", [&in](std::ostream& out) {
     IO::write_node_file(out, in.node.points, in.node.attributes, in.node.first_index);
   });
-  files.add(ele_path, [cells, &in](std::ostream& out) { IO::write_ele_file(out, cells, in.node.first_index); });
+  files.add(ele_path, [cells = std::move(cells), &in](std::ostream& out) { IO::write_ele_file(out, cells, in.node.first_index); });
 }
 
 } // namespace edge_swap

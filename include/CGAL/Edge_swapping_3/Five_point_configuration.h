@@ -98,7 +98,6 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
   // Signs of the barycentric coordinates of e in c (appendix A): replacing
   // vertex k of c by e gives the sign of b_k.
   auto orientation = tr.geom_traits().orientation_3_object();
-  Orientation o[4];
   int pos = 0, zero = 0, neg = 0, k_zero = -1, k_neg = -1;
   for(int k = 0; k < 4; ++k)
   {
@@ -106,9 +105,9 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
     std::array<const typename Tr::Point*, 4> p;
     for(int m = 0; m < 4; ++m)
       p[m] = (m == k) ? &e->point() : &c->vertex(m)->point();
-    o[k] = orientation(*p[0], *p[1], *p[2], *p[3]);
-    if(o[k] == POSITIVE) ++pos;
-    else if(o[k] == ZERO) { ++zero; k_zero = k; }
+    const Orientation o = orientation(*p[0], *p[1], *p[2], *p[3]);
+    if(o == POSITIVE) ++pos;
+    else if(o == ZERO) { ++zero; k_zero = k; }
     else { ++neg; k_neg = k; }
   }
 
