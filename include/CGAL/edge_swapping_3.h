@@ -22,19 +22,26 @@ namespace CGAL {
 /// prefers in its alternative form, until a cycle makes no swap.
 /// With `Edge_swapping_3::Delaunay_criterion` the ending is CONVERGED only if
 /// every facet is then locally Delaunay, else STUCK (Joe's local optima).
-template <class Tr, class Criterion>
+/// In a domain mesh, `constraints` (a model of `MeshConstraints_3`) keeps the
+/// constrained facets and the subdomains: a flip that would remove the one or
+/// join the other is not made.
+template <class Tr, class Criterion, class Constraints = Edge_swapping_3::No_constraints>
 Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
-                                        const Edge_swapping_3::Swap_options& options = {})
+                                        const Edge_swapping_3::Swap_options& options = {},
+                                        const Constraints& constraints = Constraints())
 {
   using namespace Edge_swapping_3;
+  std::array<typename Tr::Cell_handle, 4> created;
   auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](typename Tr::Cell_handle c, int i) {
     // The exact in-sphere test is cheaper than the classification, and most
     // facets pass it: for Delaunay, only a failing facet is classified.
     if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
       if(is_locally_delaunay(tr, c, i, criterion.perturbation)) return -1;
     const auto conf = classify_facet(tr, c, i);
-    if(!conf.is_swappable() || !criterion(tr, conf)) return -1;
-    flip(tr, conf);
+    if(!conf.is_swappable() || !flip_respects_constraints(tr, conf.flip_plan(), constraints) ||
+       !criterion(tr, conf))
+      return -1;
+    flip(tr, conf, created, constraints);
     return int(conf.flip_kind());
   });
   if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
@@ -52,9 +59,11 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 /// A tag lives on its cell until a flip replaces the cell. Tags are kept in the
 /// cells' TDS mark (`tds_data()`, which CGAL's own operations clear after use),
 /// and all marks are clear again when the function returns.
-template <class Tr>
+/// `constraints` as for `swap_edges`.
+template <class Tr, class Constraints = Edge_swapping_3::No_constraints>
 Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
-                                                    const Edge_swapping_3::Swap_options& options = {})
+                                                    const Edge_swapping_3::Swap_options& options = {},
+                                                    const Constraints& constraints = Constraints())
 {
   using namespace Edge_swapping_3;
   typedef typename Tr::Cell_handle Cell_handle;
@@ -73,10 +82,11 @@ Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
       for(int k = 0; k < conf.number_of_tetrahedra(); ++k) conf.tetrahedron(k)->tds_data().mark_in_conflict();
     if(!conf.is_swappable()) return -1;
     const auto& plan = conf.flip_plan();
+    if(!flip_respects_constraints(tr, plan, constraints)) return -1;
     bool any_tagged = false;
     for(int k = 0; k < plan.number_of_old_cells; ++k) any_tagged = any_tagged || tagged(plan.old_cells[k]);
     if(!any_tagged) return -1;
-    flip(tr, conf, created); // the new cells are untagged
+    flip(tr, conf, created, constraints); // the new cells are untagged
     return int(conf.flip_kind());
   });
   for(auto c : tr.all_cell_handles()) c->tds_data().clear();

@@ -169,13 +169,15 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
 
 /// Carries out the swap of a swappable configuration, which must be fresh (no
 /// change to the triangulation since it was classified). Writes the handles
-/// of the new cells to `created` and returns their number.
-template <class Tr>
+/// of the new cells to `created` and returns their number. Cell and facet data
+/// follow the tetrahedra as `constraints` says (see `execute_flip`).
+template <class Tr, class Constraints = No_constraints>
 int flip(Tr& tr, const Five_point_configuration<Tr>& conf,
-         std::array<typename Tr::Cell_handle, 4>& created)
+         std::array<typename Tr::Cell_handle, 4>& created,
+         const Constraints& constraints = Constraints())
 {
   CGAL_precondition(conf.is_swappable());
-  return execute_flip(tr, conf.flip_plan(), created);
+  return execute_flip(tr, conf.flip_plan(), created, constraints);
 }
 
 /// Carries out the swap of a swappable, fresh configuration.

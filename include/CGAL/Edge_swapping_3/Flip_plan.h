@@ -12,6 +12,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL/enum.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <array>
 #include <cstddef>
 
@@ -133,17 +134,21 @@ Orientation worst_orientation(const Tr& tr, const Flip_plan<Tr>& plan)
 /// Carries out a valid plan: the old cells are replaced by the new ones and
 /// glued to the outside. Old cells are reused in place, so handles to them
 /// name other tetrahedra afterwards. Writes the handles of the new cells to
-/// `created` and returns their number. Purely combinatorial.
-template <class Tr>
+/// `created` and returns their number. Purely combinatorial. The new cells
+/// take the cell data of the old ones (one subdomain), and each keeps the
+/// facet data of the old facet it shares with the outside (`constraints`).
+template <class Tr, class Constraints = No_constraints>
 int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
-                 std::array<typename Tr::Cell_handle, 4>& created)
+                 std::array<typename Tr::Cell_handle, 4>& created,
+                 const Constraints& constraints = Constraints())
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   auto& tds = tr.tds();
 
   // The facets on the boundary of the old cells, with the cell outside them.
-  struct Outside { std::array<Vertex_handle, 3> v; Cell_handle cell; int index; };
+  struct Outside { std::array<Vertex_handle, 3> v; Cell_handle cell; int index;
+                   typename Constraints::Facet_data data; };
   std::array<Outside, 8> outside;
   int n_out = 0;
   auto is_old = [&](Cell_handle c) {
@@ -163,8 +168,10 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
       o.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
       o.cell = nb;
       o.index = nb->index(c);
+      o.data = constraints.facet_data(c, i);
     }
   }
+  const auto cell_data = constraints.cell_data(plan.old_cells[0]);
 
   for(int k = 0; k < plan.number_of_new_cells; ++k)
   {
@@ -177,6 +184,7 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
     }
     else
       created[k] = tds.create_cell(t[0], t[1], t[2], t[3]);
+    constraints.set_cell_data(created[k], cell_data);
   }
 
   auto has_all = [](Cell_handle c, const Vertex_handle* v) {
@@ -194,6 +202,7 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
         if(m != k && has_all(created[m], f))
         {
           a->set_neighbor(i, created[m]);
+          constraints.set_facet_data(a, i, constraints.free_facet_data());
           glued = true;
         }
       for(int m = 0; m < n_out && !glued; ++m)
@@ -204,6 +213,7 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
         if(o.v[2] != f[0] && o.v[2] != f[1] && o.v[2] != f[2]) continue;
         a->set_neighbor(i, o.cell);
         o.cell->set_neighbor(o.index, a);
+        constraints.set_facet_data(a, i, o.data);
         glued = true;
       }
       CGAL_assertion(glued);

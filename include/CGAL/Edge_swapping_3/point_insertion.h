@@ -1,0 +1,231 @@
+// Point insertion by swapping (paper section 5, "Mesh Refinement Operation"):
+// locate the point by walking, split the simplex it falls in (1-4 in a cell,
+// 2-6 on a facet, n-2n on an edge; joined to the visible hull facets outside),
+// then swap outward from the new vertex under any criterion.
+//
+// For the Delaunay criterion the front only moves outward: only the facets
+// opposite the new vertex (its link) are tested, and a flip puts new link
+// facets on the stack. For any other criterion every facet of a changed cell
+// is tested again (back-propagation), as the paper prescribes.
+
+#ifndef CGAL_EDGE_SWAPPING_3_POINT_INSERTION_H
+#define CGAL_EDGE_SWAPPING_3_POINT_INSERTION_H
+
+#include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/internal/split_with_data.h>
+#include <array>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// What one insertion did.
+template <class Tr>
+struct Insertion_result
+{
+  /// The vertex at the point: new, or the existing one at an equal point;
+  /// the default handle when the point was refused (outside the domain, or on
+  /// a constrained facet or edge, or not locatable in dimension 3).
+  typename Tr::Vertex_handle vertex;
+  typename Tr::Locate_type location = Tr::CELL;
+  bool is_new = false;
+  std::array<std::size_t, number_of_flip_kinds> swaps{};
+  /// Delaunay only: link facets left not locally Delaunay with no flip to
+  /// make (never observed; Joe 1991 proves it cannot happen).
+  std::size_t stuck_facets = 0;
+  /// Other criteria: the swap limit was reached (the front did not settle).
+  bool swap_limit_reached = false;
+
+  std::size_t total_swaps() const { return swaps[0] + swaps[1] + swaps[2] + swaps[3]; }
+};
+
+namespace internal {
+
+// A facet of the link of v kept on the stack: the cell that holds v and the
+// facet, and the facet's vertices, which tell whether a flip has since reused
+// the cell for another tetrahedron.
+template <class Tr>
+struct Link_facet
+{
+  typename Tr::Cell_handle cell;
+  std::array<typename Tr::Vertex_handle, 3> v;
+};
+
+template <class Tr>
+void push_link_facet(std::vector<Link_facet<Tr>>& stack, typename Tr::Cell_handle c,
+                     typename Tr::Vertex_handle v)
+{
+  const int i = c->index(v);
+  stack.push_back({c, {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}});
+}
+
+// The current index of the link facet opposite v, or -1 if the cell no longer holds it.
+template <class Tr>
+int current_link_index(const Tr& tr, const Link_facet<Tr>& f, typename Tr::Vertex_handle v)
+{
+  if(!tr.tds().cells().is_used(f.cell)) return -1;
+  int i;
+  if(!f.cell->has_vertex(v, i)) return -1;
+  for(const auto& w : f.v)
+    if(!f.cell->has_vertex(w)) return -1;
+  return i;
+}
+
+// The flip that makes the link facet (c, i) of v Delaunay, if it can be made
+// now: the flip of the five-point configuration for a finite facet; for the
+// facet between two infinite cells (v and the apex across on a coplanar hull),
+// the hull 2-2 flip of the edge they share.
+template <class Tr>
+bool plan_link_flip(const Tr& tr, typename Tr::Cell_handle c, int i, Flip_plan<Tr>& plan)
+{
+  const auto n = c->neighbor(i);
+  if(!tr.is_infinite(c) && !tr.is_infinite(n))
+  {
+    const auto conf = classify_facet(tr, c, i);
+    if(!conf.is_swappable()) return false;
+    plan = conf.flip_plan();
+    return true;
+  }
+  if(!tr.is_infinite(c)) return false; // a hull facet seen from inside is always Delaunay
+  const int inf = c->index(tr.infinite_vertex());
+  int a = -1, b = -1;
+  for(int k = 0; k < 4; ++k)
+    if(k != i && k != inf) (a < 0 ? a : b) = k;
+  const Edge_ring<Tr> ring(tr, c, a, b);
+  const auto apex = n->vertex(n->index(c));
+  return ring.size() == 4 && ring.plan_flip(plan, ring.diagonal_through(c->vertex(i), apex)) &&
+         worst_orientation(tr, plan) == POSITIVE;
+}
+
+// Flips outward from the new vertex v until its link is locally Delaunay.
+template <class Tr, class Constraints>
+void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation perturbation,
+                           const Constraints& constraints, Insertion_result<Tr>& result)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  std::vector<Link_facet<Tr>> stack, unflipped;
+  std::vector<Cell_handle> star;
+  tr.incident_cells(v, std::back_inserter(star));
+  for(Cell_handle c : star) push_link_facet(stack, c, v);
+
+  Flip_plan<Tr> plan;
+  std::array<Cell_handle, 4> created;
+  // A facet that cannot be flipped now is kept aside and tried again once the
+  // stack is empty, as long as flips are still being made.
+  for(bool progress = true; progress;)
+  {
+    progress = false;
+    while(!stack.empty())
+    {
+      const Link_facet<Tr> f = stack.back();
+      stack.pop_back();
+      const int i = current_link_index(tr, f, v);
+      if(i < 0 || is_locally_delaunay(tr, f.cell, i, perturbation)) continue;
+      if(!plan_link_flip(tr, f.cell, i, plan) || !flip_respects_constraints(tr, plan, constraints))
+      {
+        unflipped.push_back(f);
+        continue;
+      }
+      const int n = execute_flip(tr, plan, created, constraints);
+      ++result.swaps[plan.kind];
+      progress = true;
+      for(int k = 0; k < n; ++k)
+        if(created[k]->has_vertex(v)) push_link_facet(stack, created[k], v);
+    }
+    if(progress) std::swap(stack, unflipped);
+  }
+  for(const auto& f : unflipped)
+  {
+    const int i = current_link_index(tr, f, v);
+    if(i >= 0 && !is_locally_delaunay(tr, f.cell, i, perturbation)) ++result.stuck_facets;
+  }
+}
+
+// Swaps from the new vertex v under any criterion, with back-propagation:
+// after a flip, every facet of the new cells is tested again.
+template <class Tr, class Criterion, class Constraints>
+void swap_around(Tr& tr, typename Tr::Vertex_handle v, const Criterion& criterion,
+                 const Constraints& constraints, std::size_t max_swaps, Insertion_result<Tr>& result)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 3> Triple;
+  std::vector<Triple> stack;
+  auto push_facets = [&](Cell_handle c) {
+    for(int i = 0; i < 4; ++i)
+      stack.push_back({c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)});
+  };
+  std::vector<Cell_handle> star;
+  tr.incident_cells(v, std::back_inserter(star));
+  for(Cell_handle c : star) push_facets(c);
+
+  std::array<Cell_handle, 4> created;
+  while(!stack.empty())
+  {
+    const Triple t = stack.back();
+    stack.pop_back();
+    Cell_handle c;
+    int i, j, k;
+    if(!tr.is_facet(t[0], t[1], t[2], c, i, j, k)) continue;
+    const int l = 6 - i - j - k;
+    if(tr.is_infinite(c) || tr.is_infinite(c->neighbor(l))) continue;
+    const auto conf = classify_facet(tr, c, l);
+    if(!conf.is_swappable() || !flip_respects_constraints(tr, conf.flip_plan(), constraints) ||
+       !criterion(tr, conf))
+      continue;
+    if(result.total_swaps() >= max_swaps)
+    {
+      result.swap_limit_reached = true;
+      return;
+    }
+    const int n = flip(tr, conf, created, constraints);
+    ++result.swaps[conf.flip_kind()];
+    for(int m = 0; m < n; ++m) push_facets(created[m]);
+  }
+}
+
+} // namespace internal
+
+/// Inserts `p` into `tr` (dimension 3) by splitting the simplex it falls in,
+/// then swapping outward from the new vertex under `criterion` (a model of
+/// `SwapCriterion_3`). With `Delaunay_criterion`, inserting into a Delaunay
+/// triangulation gives the Delaunay triangulation of the points with `p`
+/// (with CGAL's perturbation: CGAL's own, cell for cell).
+/// The walk starts at `hint` (any cell; default: anywhere). In a domain mesh
+/// (`constraints`), a point outside the domain, or on a constrained facet or
+/// on an edge of one, is refused and `tr` is left unchanged. Other criteria
+/// stop after `max_swaps` swaps (their front need not settle).
+template <class Tr, class Criterion, class Constraints = No_constraints>
+Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, const Criterion& criterion,
+                                        typename Tr::Cell_handle hint = typename Tr::Cell_handle(),
+                                        const Constraints& constraints = Constraints(),
+                                        std::size_t max_swaps = 100000)
+{
+  CGAL_precondition(tr.dimension() == 3);
+  Insertion_result<Tr> result;
+  int li, lj;
+  // CGAL's walk: exact orientation tests, remembering and stochastic.
+  const auto c = tr.locate(p, result.location, li, lj, hint);
+  if(result.location == Tr::VERTEX)
+  {
+    result.vertex = c->vertex(li);
+    return result;
+  }
+  if(!internal::split_is_allowed(tr, c, result.location, li, lj, constraints))
+    return result;
+  result.vertex = internal::split_with_data(tr, p, c, result.location, li, lj, constraints);
+  result.is_new = true;
+  if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
+    internal::flip_link_to_delaunay(tr, result.vertex, criterion.perturbation, constraints, result);
+  else
+    internal::swap_around(tr, result.vertex, criterion, constraints, max_swaps, result);
+  return result;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_POINT_INSERTION_H
