@@ -134,15 +134,26 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
   if(pos == 2 && neg == 1)
   {
     // Concave at the edge opposite k_neg; convex if a third tetrahedron fills it.
+    // The edge has three cells exactly when the cell across the facet of c
+    // opposite k_neg also holds e. The 3-2 flip then replaces the three by c
+    // with a, and c with b, replaced by e: the two cells whose orientations
+    // were just found positive, so it is valid.
     int a, b;
     edge_opposite(k_neg, a, b);
-    internal::Edge_ring<Tr> ring(tr, c, a, b);
+    const Cell_handle t = c->neighbor(k_neg);
     conf.kind_ = CONCAVE;
-    if(ring.size() == 3 && ring.plan_flip(plan, 0))
+    if(t->has_vertex(e))
     {
-      const Orientation w = worst_orientation(tr, plan);
-      conf.kind_ = (w == POSITIVE) ? THREE_TETRAHEDRA_CONVEX
-                                   : (w == ZERO ? PLANAR_UNSWAPPABLE : CONCAVE);
+      // Old cells in turning order around the edge, as CGAL's circulator gives them.
+      const bool n_next = (Tr::next_around_edge(a, b) == i);
+      plan.kind = FLIP_3_2;
+      plan.add_old_cell(c);
+      plan.add_old_cell(n_next ? n : t);
+      plan.add_old_cell(n_next ? t : n);
+      const auto tc = internal::tuple_of<Tr>(c);
+      plan.add_new_cell(internal::replaced(tc, c->vertex(b), e));
+      plan.add_new_cell(internal::replaced(tc, c->vertex(a), e));
+      conf.kind_ = THREE_TETRAHEDRA_CONVEX;
     }
     return conf;
   }

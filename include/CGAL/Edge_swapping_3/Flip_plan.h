@@ -15,6 +15,7 @@
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -146,10 +147,36 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
   typedef typename Tr::Vertex_handle Vertex_handle;
   auto& tds = tr.tds();
 
-  // The facets on the boundary of the old cells, with the cell outside them.
-  struct Outside { std::array<Vertex_handle, 3> v; Cell_handle cell; int index;
-                   typename Constraints::Facet_data data; };
-  std::array<Outside, 8> outside;
+  // A facet is matched by the sum of its vertex addresses first (cheap), then
+  // by its vertices; addresses only serve the search, never a decision.
+  struct Facet_slot
+  {
+    std::uintptr_t key;
+    std::array<Vertex_handle, 3> v;
+    Cell_handle cell;
+    int index;
+    typename Constraints::Facet_data data;
+    bool glued;
+  };
+  auto slot_of = [](Cell_handle c, int i) {
+    Facet_slot s;
+    s.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+    s.key = reinterpret_cast<std::uintptr_t>(&*s.v[0]) + reinterpret_cast<std::uintptr_t>(&*s.v[1]) +
+            reinterpret_cast<std::uintptr_t>(&*s.v[2]);
+    s.cell = c;
+    s.index = i;
+    s.glued = false;
+    return s;
+  };
+  auto same_facet = [](const Facet_slot& a, const Facet_slot& b) {
+    if(a.key != b.key) return false;
+    for(const auto& w : a.v)
+      if(w != b.v[0] && w != b.v[1] && w != b.v[2]) return false;
+    return true;
+  };
+
+  // The facets on the boundary of the old cells, seen from the cell outside them.
+  std::array<Facet_slot, 8> outside;
   int n_out = 0;
   auto is_old = [&](Cell_handle c) {
     for(int k = 0; k < plan.number_of_old_cells; ++k)
@@ -164,8 +191,8 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
       Cell_handle nb = c->neighbor(i);
       if(is_old(nb)) continue;
       CGAL_assertion(n_out < 8);
-      Outside& o = outside[n_out++];
-      o.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+      Facet_slot& o = outside[n_out++];
+      o = slot_of(c, i);
       o.cell = nb;
       o.index = nb->index(c);
       o.data = constraints.facet_data(c, i);
@@ -187,40 +214,37 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
     constraints.set_cell_data(created[k], cell_data);
   }
 
-  auto has_all = [](Cell_handle c, const Vertex_handle* v) {
-    return c->has_vertex(v[0]) && c->has_vertex(v[1]) && c->has_vertex(v[2]);
-  };
+  // Glue each facet of a new cell to the outside or to another new cell.
+  std::array<Facet_slot, 16> inner;
+  int n_in = 0;
   for(int k = 0; k < plan.number_of_new_cells; ++k)
-  {
-    Cell_handle a = created[k];
     for(int i = 0; i < 4; ++i)
     {
-      const Vertex_handle f[3] = {a->vertex((i + 1) & 3), a->vertex((i + 2) & 3),
-                                  a->vertex((i + 3) & 3)};
+      const Facet_slot f = slot_of(created[k], i);
       bool glued = false;
-      for(int m = 0; m < plan.number_of_new_cells && !glued; ++m)
-        if(m != k && has_all(created[m], f))
+      for(int m = 0; m < n_out && !glued; ++m)
+        if(same_facet(outside[m], f))
         {
-          a->set_neighbor(i, created[m]);
-          constraints.set_facet_data(a, i, constraints.free_facet_data());
+          created[k]->set_neighbor(i, outside[m].cell);
+          outside[m].cell->set_neighbor(outside[m].index, created[k]);
+          constraints.set_facet_data(created[k], i, outside[m].data);
           glued = true;
         }
-      for(int m = 0; m < n_out && !glued; ++m)
-      {
-        const auto& o = outside[m];
-        if(o.v[0] != f[0] && o.v[0] != f[1] && o.v[0] != f[2]) continue;
-        if(o.v[1] != f[0] && o.v[1] != f[1] && o.v[1] != f[2]) continue;
-        if(o.v[2] != f[0] && o.v[2] != f[1] && o.v[2] != f[2]) continue;
-        a->set_neighbor(i, o.cell);
-        o.cell->set_neighbor(o.index, a);
-        constraints.set_facet_data(a, i, o.data);
-        glued = true;
-      }
-      CGAL_assertion(glued);
+      for(int m = 0; m < n_in && !glued; ++m)
+        if(!inner[m].glued && same_facet(inner[m], f))
+        {
+          created[k]->set_neighbor(i, inner[m].cell);
+          inner[m].cell->set_neighbor(inner[m].index, created[k]);
+          constraints.set_facet_data(created[k], i, constraints.free_facet_data());
+          constraints.set_facet_data(inner[m].cell, inner[m].index, constraints.free_facet_data());
+          inner[m].glued = glued = true;
+        }
+      if(!glued) inner[n_in++] = f;
     }
+  CGAL_assertion_code(for(int m = 0; m < n_in; ++m) CGAL_assertion(inner[m].glued);)
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
     for(int i = 0; i < 4; ++i)
-      a->vertex(i)->set_cell(a);
-  }
+      created[k]->vertex(i)->set_cell(created[k]);
 
   for(int k = plan.number_of_new_cells; k < plan.number_of_old_cells; ++k)
     tds.delete_cell(plan.old_cells[k]);

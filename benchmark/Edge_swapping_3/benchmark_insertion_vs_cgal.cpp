@@ -1,0 +1,56 @@
+// Benchmark (not a test): a Delaunay triangulation built from scratch by
+// flip-based insertion in spatial order, beside CGAL's Delaunay_triangulation_3
+// (Bowyer-Watson) and TetGen on the same points, in one run, each in its own
+// process. Checks that ours equals CGAL's cell for cell.
+//
+//   benchmark_insertion_vs_cgal [N ...]   (default: 100000 1000000)
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/Triangulation_3.h>
+#include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
+#include "benchmark_common.h"
+
+typedef CGAL::Triangulation_3<K> Triangulation;
+typedef CGAL::Delaunay_triangulation_3<K> Delaunay;
+
+int main(int argc, char** argv)
+{
+  std::vector<std::size_t> sizes;
+  for(int a = 1; a < argc; ++a) sizes.push_back(std::stoul(argv[a]));
+  if(sizes.empty()) sizes = {100000, 1000000};
+
+  std::printf("%9s | %8s %7s | %8s %7s | %8s %7s %10s %10s | %7s %7s | %s\n", "points", "CGAL s", "MiB", "TetGen s",
+              "MiB", "ours s", "MiB", "flips", "flips/pt", "t ratio", "m ratio", "equal to CGAL");
+  for(std::size_t n : sizes)
+  {
+    const Measure cgal = in_child([n](double* out) {
+      const auto points = random_points(n);
+      CGAL::Real_timer t;
+      t.start();
+      Delaunay dt(points.begin(), points.end()); // CGAL spatially sorts the range
+      out[0] = t.time();
+    });
+    const Measure tet = in_child([n](double* out) { tetgen(n, out); });
+    const Measure ours = in_child([n](double* out) {
+      const auto points = random_points(n);
+      Triangulation tr;
+      ES::Insertion_totals totals;
+      ES::delaunay_by_insertion(tr, points, &totals);
+      out[0] = totals.seconds;
+      const auto& s = totals.swaps;
+      out[1] = double(s[0] + s[1] + s[2] + s[3]);
+      out[2] = double(totals.stuck_facets);
+      struct rusage usage;
+      getrusage(RUSAGE_SELF, &usage);
+      out[4] = double(usage.ru_maxrss) / 1024.0; // before the comparison builds CGAL's too
+      out[3] = ES::compare_with_delaunay(tr).identical ? 1 : 0;
+    });
+    std::printf("%9zu | %8.2f %7.0f | %8.2f %7.0f | %8.2f %7.0f %10.0f %10.2f | %7.2f %7.2f | %s\n", n,
+                cgal.values[0], cgal.peak_mib, tet.values[0], tet.values[1], ours.values[0], ours.values[4],
+                ours.values[1], ours.values[1] / double(n), ours.values[0] / cgal.values[0],
+                ours.values[4] / cgal.peak_mib, ours.values[3] == 1 ? "yes" : "NO");
+    std::fflush(stdout);
+  }
+  return 0;
+}
