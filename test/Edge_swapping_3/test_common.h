@@ -43,26 +43,30 @@ inline std::vector<Cell_points> cell_set(const Tr& tr)
   return cells;
 }
 
-/// The exact total volume of the finite cells (coordinates are doubles, so rationals are exact).
-inline CGAL::Exact_rational exact_volume(const Tr& tr)
+/// The exact volume of a tetrahedron (coordinates are doubles, so rationals are exact).
+inline CGAL::Exact_rational exact_volume(const Point& o, const Point& a, const Point& b, const Point& c)
 {
   typedef CGAL::Exact_rational Q;
-  Q total = 0;
-  for(auto c : tr.finite_cell_handles())
+  Q m[3][3];
+  const Point* p[3] = {&a, &b, &c};
+  for(int i = 0; i < 3; ++i)
   {
-    Q m[3][3];
-    const Point& o = c->vertex(0)->point();
-    for(int i = 0; i < 3; ++i)
-    {
-      const Point& p = c->vertex(i + 1)->point();
-      m[i][0] = Q(p.x()) - Q(o.x());
-      m[i][1] = Q(p.y()) - Q(o.y());
-      m[i][2] = Q(p.z()) - Q(o.z());
-    }
-    total += m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    m[i][0] = Q(p[i]->x()) - Q(o.x());
+    m[i][1] = Q(p[i]->y()) - Q(o.y());
+    m[i][2] = Q(p[i]->z()) - Q(o.z());
   }
-  return total / 6;
+  return (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+          m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) / 6;
+}
+
+/// The exact total volume of the finite cells.
+template <class T>
+CGAL::Exact_rational exact_volume(const T& tr)
+{
+  CGAL::Exact_rational total = 0;
+  for(auto c : tr.finite_cell_handles())
+    total += exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  return total;
 }
 
 // --- Input families. Every random one is drawn from `seed`, which the tests print.

@@ -1,0 +1,285 @@
+// Refinement at circumcenters (paper section 5): incremental mesh generation
+// by aspect ratio, and adaptive refinement by a solution gradient. Both keep
+// a heap of cells, insert a site at the circumcenter of the top cell with
+// `insert_by_swapping`, and swap under a criterion (Delaunay by default).
+//
+// Heap entries name cells by their four vertices, never by handle: swaps
+// reuse and free cells, and vertices are never removed, so an entry is
+// re-found (`is_cell`) when it reaches the top and dropped if its cell is gone.
+
+#ifndef CGAL_EDGE_SWAPPING_3_REFINEMENT_H
+#define CGAL_EDGE_SWAPPING_3_REFINEMENT_H
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/point_insertion.h>
+#include <cmath>
+#include <functional>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// One round of refinement: for aspect ratio, one pass over the cells that
+/// were above the target at its start (the paper's "cycle over all cells");
+/// for gradients, one batch of sites.
+struct Refinement_round
+{
+  std::size_t round = 0;
+  std::size_t sites_inserted = 0;   ///< in this round
+  std::size_t vertices = 0;         ///< in the mesh after the round
+  double worst_refinable = 0;       ///< aspect ratio: worst over refinable cells after the round
+  double worst = 0;                 ///< aspect ratio: worst over all cells of the domain after the round
+};
+
+struct Refinement_report
+{
+  std::vector<Refinement_round> rounds; ///< rounds[0] is the mesh before refinement
+  std::size_t sites_inserted = 0;
+  std::size_t sites_refused = 0;        ///< circumcenters outside the domain or on a constraint
+  std::array<std::size_t, number_of_flip_kinds> swaps{};
+  bool target_met = false;              ///< aspect ratio only
+  double seconds = 0;
+};
+
+/// Where a new site fell: the cell that contained it and the site's
+/// barycentric coordinates in it, for interpolating vertex values.
+template <class Tr>
+struct Site_location
+{
+  std::array<typename Tr::Vertex_handle, 4> vertices;
+  std::array<double, 4> weights;
+};
+
+template <class Tr>
+struct Refinement_options
+{
+  /// Called for each new vertex, before the next site is chosen: set its
+  /// data (index, field values) there.
+  std::function<void(typename Tr::Vertex_handle, const Site_location<Tr>&)> new_vertex;
+  /// Called after each round (progress, history).
+  std::function<void(const Refinement_round&)> round_visitor;
+  std::size_t max_rounds = 1000;
+};
+
+namespace internal {
+
+template <class Tr>
+struct Heap_entry
+{
+  double priority;
+  std::array<typename Tr::Vertex_handle, 4> v;
+  bool operator<(const Heap_entry& o) const { return priority < o.priority; }
+};
+
+template <class Tr>
+Heap_entry<Tr> heap_entry(typename Tr::Cell_handle c, double priority)
+{
+  return {priority, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}};
+}
+
+template <class Tr>
+bool find_cell(const Tr& tr, const Heap_entry<Tr>& e, typename Tr::Cell_handle& c)
+{
+  int i, j, k, l;
+  return tr.is_cell(e.v[0], e.v[1], e.v[2], e.v[3], c, i, j, k, l);
+}
+
+template <class Tr>
+std::array<double, 4> barycentric_weights(const Tr& tr, typename Tr::Cell_handle c, const typename Tr::Point& p)
+{
+  auto volume = tr.geom_traits().compute_volume_3_object();
+  std::array<double, 4> w;
+  double total = 0;
+  for(int k = 0; k < 4; ++k)
+  {
+    std::array<const typename Tr::Point*, 4> q;
+    for(int m = 0; m < 4; ++m) q[m] = (m == k) ? &p : &c->vertex(m)->point();
+    w[k] = CGAL::to_double(volume(*q[0], *q[1], *q[2], *q[3]));
+    total += w[k];
+  }
+  for(auto& x : w) x = (total != 0) ? x / total : 0.25;
+  return w;
+}
+
+// Inserts a site at the circumcenter of finite cell c; returns the new vertex
+// or the default handle when the site is refused.
+template <class Tr, class Criterion, class Constraints>
+typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle c, const Criterion& criterion,
+                                               const Constraints& constraints,
+                                               const Refinement_options<Tr>& options,
+                                               Refinement_report& report)
+{
+  const auto& gt = tr.geom_traits();
+  const auto p = gt.construct_circumcenter_3_object()(c->vertex(0)->point(), c->vertex(1)->point(),
+                                                       c->vertex(2)->point(), c->vertex(3)->point());
+  typename Tr::Locate_type lt;
+  int li, lj;
+  // The walk starts at the cell itself (paper: the site need not lie in it).
+  const auto at = tr.locate(p, lt, li, lj, c);
+  if(lt == Tr::VERTEX || lt == Tr::OUTSIDE_CONVEX_HULL || lt == Tr::OUTSIDE_AFFINE_HULL ||
+     !split_is_allowed(tr, at, lt, li, lj, constraints))
+  {
+    ++report.sites_refused;
+    return typename Tr::Vertex_handle();
+  }
+  Site_location<Tr> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)},
+                          barycentric_weights(tr, at, p)};
+  const auto r = insert_by_swapping(tr, p, criterion, at, constraints);
+  CGAL_assertion(r.is_new);
+  for(int k = 0; k < number_of_flip_kinds; ++k) report.swaps[k] += r.swaps[k];
+  ++report.sites_inserted;
+  if(options.new_vertex) options.new_vertex(r.vertex, where);
+  return r.vertex;
+}
+
+// Whether the circumcenter of finite cell c lies in the domain (the paper's
+// "refinable" cells).
+template <class Tr, class Constraints>
+bool is_refinable(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints)
+{
+  const auto p = tr.geom_traits().construct_circumcenter_3_object()(
+      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  typename Tr::Locate_type lt;
+  int li, lj;
+  const auto at = tr.locate(p, lt, li, lj, c);
+  return lt != Tr::VERTEX && lt != Tr::OUTSIDE_CONVEX_HULL && lt != Tr::OUTSIDE_AFFINE_HULL &&
+         split_is_allowed(tr, at, lt, li, lj, constraints);
+}
+
+template <class Tr>
+double cell_aspect_ratio(typename Tr::Cell_handle c, Aspect_ratio_definition definition)
+{
+  Aspect_ratio measure;
+  measure.definition = definition;
+  return measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+}
+
+} // namespace internal
+
+/// Incremental mesh generation (paper section 5, Fig. 13): inserts sites at
+/// the circumcenters of refinable cells (circumcenter in the domain) whose
+/// aspect ratio exceeds `target`, worst first, swapping under `criterion`,
+/// until every refinable cell meets the target, `max_sites` sites were
+/// inserted, or a round inserts nothing. One round is one pass over the cells
+/// above the target at its start; cells made during the round wait for the next.
+template <class Tr, class Criterion = Delaunay_criterion, class Constraints = No_constraints>
+Refinement_report refine_by_aspect_ratio(Tr& tr, double target, Aspect_ratio_definition definition,
+                                         std::size_t max_sites,
+                                         const Refinement_options<Tr>& options = Refinement_options<Tr>(),
+                                         const Criterion& criterion = Criterion(),
+                                         const Constraints& constraints = Constraints())
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  CGAL_precondition(tr.dimension() == 3);
+  CGAL::Real_timer timer;
+  timer.start();
+  Refinement_report report;
+
+  // The heap of the next round is filled while measuring the current mesh.
+  std::priority_queue<internal::Heap_entry<Tr>> heap;
+  auto survey = [&](std::size_t round, std::size_t inserted) {
+    Refinement_round r;
+    r.round = round;
+    r.sites_inserted = inserted;
+    r.vertices = tr.number_of_vertices();
+    for(Cell_handle c : tr.finite_cell_handles())
+    {
+      if(!constraints.is_in_domain(tr, c)) continue;
+      const double ratio = internal::cell_aspect_ratio<Tr>(c, definition);
+      r.worst = (std::max)(r.worst, ratio);
+      if(ratio <= target || !internal::is_refinable(tr, c, constraints)) continue;
+      r.worst_refinable = (std::max)(r.worst_refinable, ratio);
+      heap.push(internal::heap_entry<Tr>(c, ratio));
+    }
+    report.rounds.push_back(r);
+    if(options.round_visitor) options.round_visitor(r);
+  };
+
+  survey(0, 0);
+  for(std::size_t round = 1; !heap.empty() && round <= options.max_rounds && report.sites_inserted < max_sites; ++round)
+  {
+    std::size_t inserted = 0;
+    while(!heap.empty() && report.sites_inserted < max_sites)
+    {
+      const auto top = heap.top();
+      heap.pop();
+      Cell_handle c;
+      if(!internal::find_cell(tr, top, c)) continue; // destroyed by an earlier site of this round
+      if(internal::insert_circumcenter(tr, c, criterion, constraints, options, report) != typename Tr::Vertex_handle())
+        ++inserted;
+    }
+    heap = {};
+    survey(round, inserted);
+    if(inserted == 0) break;
+  }
+  report.target_met = report.rounds.back().worst_refinable <= target;
+  report.seconds = timer.time();
+  return report;
+}
+
+/// The paper's cell-wise gradient indicator: the largest difference of the
+/// vertex values along the six edges, times the cube root of the volume.
+template <class Tr, class Value>
+double gradient_indicator(const Tr& tr, typename Tr::Cell_handle c, const Value& value)
+{
+  double largest = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+      largest = (std::max)(largest, std::abs(value(c->vertex(i)) - value(c->vertex(j))));
+  const double volume = std::abs(CGAL::to_double(tr.geom_traits().compute_volume_3_object()(
+      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point())));
+  return largest * std::cbrt(volume);
+}
+
+/// Adaptive refinement (paper section 5, Fig. 12): inserts `sites` sites, each
+/// at the circumcenter of the refinable cell of largest `gradient_indicator`
+/// for `value` (a function of a vertex handle), swapping under `criterion`.
+/// After each insertion the cells around the new vertex enter the heap.
+/// `options.new_vertex` must give the new vertex its value (interpolated from
+/// the `Site_location`, or from a user function). One call is one round.
+template <class Tr, class Value, class Criterion = Delaunay_criterion, class Constraints = No_constraints>
+Refinement_report refine_by_gradient(Tr& tr, const Value& value, std::size_t sites,
+                                     const Refinement_options<Tr>& options = Refinement_options<Tr>(),
+                                     const Criterion& criterion = Criterion(),
+                                     const Constraints& constraints = Constraints())
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  CGAL_precondition(tr.dimension() == 3);
+  CGAL::Real_timer timer;
+  timer.start();
+  Refinement_report report;
+  std::priority_queue<internal::Heap_entry<Tr>> heap;
+  for(Cell_handle c : tr.finite_cell_handles())
+    if(constraints.is_in_domain(tr, c)) heap.push(internal::heap_entry<Tr>(c, gradient_indicator(tr, c, value)));
+
+  std::vector<Cell_handle> star;
+  while(!heap.empty() && report.sites_inserted < sites)
+  {
+    const auto top = heap.top();
+    heap.pop();
+    Cell_handle c;
+    if(!internal::find_cell(tr, top, c)) continue;
+    const auto v = internal::insert_circumcenter(tr, c, criterion, constraints, options, report);
+    if(v == typename Tr::Vertex_handle()) continue;
+    star.clear();
+    tr.incident_cells(v, std::back_inserter(star));
+    for(Cell_handle d : star)
+      if(!tr.is_infinite(d) && constraints.is_in_domain(tr, d))
+        heap.push(internal::heap_entry<Tr>(d, gradient_indicator(tr, d, value)));
+  }
+  Refinement_round r;
+  r.round = 1;
+  r.sites_inserted = report.sites_inserted;
+  r.vertices = tr.number_of_vertices();
+  report.rounds.push_back(r);
+  if(options.round_visitor) options.round_visitor(r);
+  report.seconds = timer.time();
+  return report;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_REFINEMENT_H
