@@ -12,8 +12,8 @@ namespace edge_swap {
 /// 0: valid; 1: not a valid triangulation of the convex hull; read errors throw (2).
 inline int run_check(const std::string& path)
 {
-  if(!ends_with(path, ".ele")) throw Usage_error("check reads an .ele mesh, not '" + path + "'");
   const Input in = read_input(path);
+  if(!in.is_mesh) throw Usage_error("check reads a mesh (.ele, .mesh or .vtu), not the point set '" + path + "'");
   Triangulation tr;
   const std::string problem = build_mesh(tr, in);
   if(!problem.empty())

@@ -3,7 +3,9 @@
 
 #include "check_command.h"
 #include "demo_command.h"
+#include "mesh_domain_command.h"
 #include "optimize_command.h"
+#include "refine_commands.h"
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -29,7 +31,39 @@ int main(int argc, char** argv)
 
   std::string check_path;
   auto* check = app.add_subcommand("check", "validity and Delaunay checks of a mesh");
-  check->add_option("MESH", check_path, "TetGen .ele mesh")->required();
+  check->add_option("MESH", check_path, "mesh: TetGen .ele, Medit .mesh or VTK .vtu")->required();
+
+  Insert_options ins;
+  auto* insert = app.add_subcommand("insert", "insert points into a mesh by splitting and swapping outward");
+  insert->add_option("MESH", ins.mesh, "mesh: .ele, .mesh or .vtu")->required();
+  insert->add_option("--points", ins.points, "TetGen .node file of the points, inserted in file order")->required();
+  insert->add_option("-o,--output", ins.output, "output .ele, .mesh or .vtu")->required();
+  insert->add_option("--criterion", ins.criterion, "swap criterion (default delaunay)");
+
+  Refine_options ref;
+  auto* refine = app.add_subcommand("refine", "insert sites at circumcenters: by aspect ratio or by a field's gradient");
+  refine->add_option("MESH", ref.mesh, "mesh: .ele, .mesh or .vtu")->required();
+  refine->add_option("-o,--output", ref.output, "output .ele, .mesh or .vtu")->required();
+  refine->add_option("--by", ref.by, "aspect-ratio or gradient")->required();
+  refine->add_option("--target", ref.target, "aspect-ratio: the largest aspect ratio wanted");
+  refine->add_option("--ratio", ref.ratio, "aspect-ratio: edge (longest/shortest edge, default) or radius (circumradius/inradius)");
+  refine->add_option("--max-sites", ref.max_sites, "aspect-ratio: site budget");
+  refine->add_option("--field", ref.field, "gradient: a vertex field of the input, or flow-density / flow-speed");
+  refine->add_option("--sites", ref.sites, "gradient: sites per round, e.g. 2000,2000");
+  refine->add_option("--criterion", ref.criterion, "swap criterion (default delaunay)");
+  refine->add_option("--history", ref.history, "CSV: one row per round");
+
+  std::string stats_path, stats_json;
+  auto* stats = app.add_subcommand("stats", "counts, dihedral-angle and aspect-ratio extremes and histograms");
+  stats->add_option("MESH", stats_path, "mesh: .ele, .mesh or .vtu")->required();
+  stats->add_option("--json", stats_json, "also write the figures as JSON");
+
+  std::string domain_name, domain_output;
+  double domain_size = 0.35;
+  auto* mesh_domain = app.add_subcommand("mesh-domain", "mesh a domain with CGAL Mesh_3 (two-spheres)");
+  mesh_domain->add_option("DOMAIN", domain_name, "two-spheres")->required();
+  mesh_domain->add_option("-o,--output", domain_output, "output .mesh, .vtu or .ele")->required();
+  mesh_domain->add_option("--size", domain_size, "target edge and cell size (default 0.35: about 5,000 vertices)");
 
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
@@ -59,6 +93,10 @@ int main(int argc, char** argv)
       return run_optimize(opt);
     }
     if(*check) return run_check(check_path);
+    if(*insert) return run_insert(ins);
+    if(*refine) return run_refine(ref);
+    if(*stats) return run_stats(stats_path, stats_json);
+    if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
     return run_demo(demo_points, demo_seed);
   }
   catch(const std::exception& e)

@@ -49,21 +49,22 @@ inline nlohmann::json statistics_json(const ES::Mesh_statistics& s)
           {"min_dihedral_angle", s.min_dihedral_angle}, {"max_dihedral_angle", s.max_dihedral_angle}};
 }
 
-inline ES::Swap_report run_criterion(Triangulation& tr, const std::string& name, ES::Perturbation perturbation,
-                                     const ES::Swap_options& options)
+/// Calls `run(criterion)` with the criterion named `name`.
+template <class Run>
+auto with_criterion(const std::string& name, ES::Perturbation perturbation, Run run)
 {
-  if(name == "delaunay") return CGAL::swap_edges(tr, ES::Delaunay_criterion(perturbation), options);
-  if(name == "minmax-dihedral") return CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(), options);
-  if(name == "maxmin-dihedral") return CGAL::swap_edges(tr, ES::Max_min_dihedral_angle_criterion(), options);
-  if(name == "min-edges") return CGAL::swap_edges(tr, ES::Min_edges_criterion(), options);
-  if(name == "aspect-ratio") return CGAL::swap_edges(tr, ES::Aspect_ratio_criterion(), options);
+  if(name == "delaunay") return run(ES::Delaunay_criterion(perturbation));
+  if(name == "minmax-dihedral") return run(ES::Min_max_dihedral_angle_criterion());
+  if(name == "maxmin-dihedral") return run(ES::Max_min_dihedral_angle_criterion());
+  if(name == "min-edges") return run(ES::Min_edges_criterion());
+  if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion());
   throw Usage_error("unknown --criterion '" + name + "'");
 }
 
 inline int run_optimize(const Optimize_options& o)
 {
   // Every option is checked before any work, and nothing is written before the end.
-  if(!ends_with(o.output, ".ele")) throw Usage_error("the output must be an .ele file: '" + o.output + "'");
+  require_output_format(o.output);
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
@@ -73,7 +74,7 @@ inline int run_optimize(const Optimize_options& o)
   Triangulation tr;
   if(in.is_mesh)
   {
-    if(o.start_given) throw Usage_error("--start applies to a .node input; an .ele input is its own start");
+    if(o.start_given) throw Usage_error("--start applies to a .node input; a mesh input is its own start");
     const std::string problem = build_mesh(tr, in);
     if(!problem.empty()) throw IO::Input_error(o.input + ": " + problem);
   }
@@ -81,6 +82,7 @@ inline int run_optimize(const Optimize_options& o)
   {
     require_valid_point_set(in, o.input);
     build_start(tr, in, o.start, o.seed);
+    mark_point_set_domain(tr);
   }
 
   const ES::Mesh_statistics before = ES::mesh_statistics(tr);
@@ -92,8 +94,14 @@ inline int run_optimize(const Optimize_options& o)
   options.record_non_delaunay_facets = !o.history.empty();
   options.cycle_visitor = cycle_progress(o.helper ? "helper" : o.criterion);
 
-  const ES::Swap_report report = o.helper ? CGAL::swap_edges_with_helper(tr, options)
-                                          : run_criterion(tr, o.criterion, options.perturbation, options);
+  // A Medit mesh keeps its boundaries and subdomains; a point set or a
+  // TetGen mesh is a triangulation of its convex hull, hull faces included.
+  const ES::Swap_report report = with_constraints(in, [&](const auto& constraints) {
+    if(o.helper) return CGAL::swap_edges_with_helper(tr, options, constraints);
+    return with_criterion(o.criterion, options.perturbation, [&](const auto& criterion) {
+      return CGAL::swap_edges(tr, criterion, options, constraints);
+    });
+  });
   const ES::Mesh_statistics after = ES::mesh_statistics(tr);
 
   Atomic_files files;

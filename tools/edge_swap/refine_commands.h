@@ -1,0 +1,273 @@
+// edge_swap insert, refine and stats: flip-based insertion of given points,
+// refinement at circumcenters (by aspect ratio or by a field's gradient),
+// and the quality figures of a mesh.
+
+#ifndef EDGE_SWAP_REFINE_COMMANDS_H
+#define EDGE_SWAP_REFINE_COMMANDS_H
+
+#include "flow_field.h"
+#include "mesh_files.h"
+#include "optimize_command.h"
+#include <CGAL/Edge_swapping_3/refinement.h>
+#include <nlohmann/json.hpp>
+#include <iostream>
+#include <sstream>
+
+namespace edge_swap {
+
+/// Reads a mesh input (not a bare point set) and builds it.
+inline Input read_mesh(const std::string& path, Triangulation& tr)
+{
+  Input in = read_input(path);
+  if(!in.is_mesh) throw Usage_error("'" + path + "' is a point set; this command needs a mesh (.ele, .mesh or .vtu)");
+  const std::string problem = build_mesh(tr, in);
+  if(!problem.empty()) throw IO::Input_error(path + ": " + problem);
+  return in;
+}
+
+/// The values of every field at a new vertex: a synthetic field from its
+/// function, the others interpolated linearly in the cell that held the site.
+inline std::vector<double> field_values(const Input& in, const Point& p,
+                                        const ES::Site_location<Triangulation>& where)
+{
+  std::vector<double> values(in.fields.size(), 0.0);
+  for(std::size_t f = 0; f < in.fields.size(); ++f)
+  {
+    if(synthetic_field(in.field_names[f], p, values[f])) continue;
+    for(int k = 0; k < 4; ++k)
+      if(where.weights[k] != 0) values[f] += where.weights[k] * in.fields[f][where.vertices[k]->info()];
+  }
+  return values;
+}
+
+inline void write_rounds(Atomic_files& files, const std::string& path, const ES::Refinement_report& report)
+{
+  if(path.empty()) return;
+  files.add(path, [report](std::ostream& out) {
+    out << "round,sites_inserted,vertices,worst_refinable_aspect_ratio,worst_aspect_ratio\n"; // ratios: aspect-ratio only
+    for(const auto& r : report.rounds)
+      out << r.round << ',' << r.sites_inserted << ',' << r.vertices << ',' << r.worst_refinable << ',' << r.worst << '\n';
+  });
+}
+
+struct Insert_options
+{
+  std::string mesh, points, output, criterion = "delaunay";
+};
+
+inline int run_insert(const Insert_options& o)
+{
+  require_output_format(o.output);
+  Triangulation tr;
+  Input in = read_mesh(o.mesh, tr);
+  const IO::Node_file node = IO::read_node_file(o.points);
+  std::size_t inserted = 0, existing = 0, refused = 0;
+  std::array<std::size_t, ES::number_of_flip_kinds> swaps{};
+  with_constraints(in, [&](const auto& constraints) {
+    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
+      Triangulation::Cell_handle hint;
+      for(const auto& q : node.points)
+      {
+        const Point p(q[0], q[1], q[2]);
+        Triangulation::Locate_type lt;
+        int li, lj;
+        const auto at = tr.locate(p, lt, li, lj, hint);
+        // Interpolation weights in the cell that holds the point (outside the hull: none).
+        ES::Site_location<Triangulation> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)}, {0, 0, 0, 0}};
+        if(!tr.is_infinite(at)) where.weights = ES::internal::barycentric_weights(tr, at, p);
+        const auto r = ES::insert_by_swapping(tr, p, criterion, at, constraints);
+        if(r.vertex == Triangulation::Vertex_handle()) { ++refused; continue; }
+        hint = r.vertex->cell();
+        if(!r.is_new) { ++existing; continue; }
+        ++inserted;
+        for(int k = 0; k < ES::number_of_flip_kinds; ++k) swaps[k] += r.swaps[k];
+        add_vertex(in, r.vertex, field_values(in, p, where));
+      }
+      return 0;
+    });
+  });
+  Atomic_files files;
+  add_mesh_files(files, o.output, tr, in);
+  files.commit();
+  std::cout << "inserted " << inserted << " points (" << existing << " on existing vertices, " << refused
+            << " refused: outside the domain or on a constrained face); swaps 2-3 " << swaps[0] << ", 3-2 "
+            << swaps[1] << ", 2-2 " << swaps[2] << ", 4-4 " << swaps[3] << "; vertices " << tr.number_of_vertices()
+            << ", cells " << tr.number_of_finite_cells() << '\n';
+  return 0;
+}
+
+struct Refine_options
+{
+  std::string mesh, output, by, field, sites, ratio = "edge", criterion = "delaunay", history;
+  double target = 0;
+  std::size_t max_sites = 1000000;
+};
+
+inline std::vector<std::size_t> parse_site_counts(const std::string& text)
+{
+  std::vector<std::size_t> counts;
+  std::stringstream s(text);
+  std::string item;
+  while(std::getline(s, item, ','))
+  {
+    if(item.empty() || item.find_first_not_of("0123456789") != std::string::npos)
+      throw Usage_error("--sites is a list of whole numbers such as 2000,2000, not '" + text + "'");
+    counts.push_back(std::stoull(item));
+  }
+  if(counts.empty()) throw Usage_error("--sites is empty");
+  return counts;
+}
+
+inline int run_refine(const Refine_options& o)
+{
+  require_output_format(o.output);
+  if(o.by != "aspect-ratio" && o.by != "gradient") throw Usage_error("--by is aspect-ratio or gradient");
+  if(o.ratio != "edge" && o.ratio != "radius") throw Usage_error("--ratio is edge or radius");
+  if(o.by == "aspect-ratio" && !(o.target >= 1)) throw Usage_error("--by aspect-ratio needs --target R with R >= 1");
+  if(o.by == "gradient" && (o.field.empty() || o.sites.empty()))
+    throw Usage_error("--by gradient needs --field NAME and --sites N[,N...]");
+  const std::vector<std::size_t> rounds = o.by == "gradient" ? parse_site_counts(o.sites) : std::vector<std::size_t>();
+
+  Triangulation tr;
+  Input in = read_mesh(o.mesh, tr);
+  int field = -1;
+  if(o.by == "gradient")
+  {
+    field = in.field_index(o.field);
+    double probe;
+    if(field < 0 && synthetic_field(o.field, Point(0, 0, 0), probe))
+    {
+      // A synthetic field not in the input: evaluate it at every vertex.
+      in.field_names.push_back(o.field);
+      in.fields.emplace_back();
+      for(const auto& p : in.points) { synthetic_field(o.field, p, probe); in.fields.back().push_back(probe); }
+      field = int(in.fields.size()) - 1;
+    }
+    if(field < 0)
+    {
+      std::string known;
+      for(const auto& n : in.field_names) known += " " + n;
+      throw Usage_error("no field '" + o.field + "' in '" + o.mesh + "' (it has:" + (known.empty() ? " none" : known) +
+                        "; synthetic: flow-density flow-speed)");
+    }
+  }
+
+  ES::Refinement_options<Triangulation> options;
+  options.new_vertex = [&](Triangulation::Vertex_handle v, const ES::Site_location<Triangulation>& where) {
+    add_vertex(in, v, field_values(in, v->point(), where));
+  };
+  CGAL::Real_timer clock;
+  clock.start();
+  auto progress = [&](const ES::Refinement_round& r) {
+    std::cerr << "refine: round " << r.round << ", " << r.sites_inserted << " sites, " << r.vertices << " vertices";
+    if(o.by == "aspect-ratio") std::cerr << ", worst refinable aspect ratio " << r.worst_refinable;
+    std::cerr << " (" << clock.time() << " s)\n";
+  };
+  if(o.by == "aspect-ratio") options.round_visitor = progress;
+
+  ES::Refinement_report total;
+  with_constraints(in, [&](const auto& constraints) {
+    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
+      if(o.by == "aspect-ratio")
+        total = ES::refine_by_aspect_ratio(tr, o.target, o.ratio == "edge" ? ES::EDGE_LENGTH_RATIO : ES::RADIUS_RATIO,
+                                           o.max_sites, options, criterion, constraints);
+      else
+      {
+        const std::size_t f = std::size_t(field);
+        auto value = [&](Triangulation::Vertex_handle v) { return in.fields[f][v->info()]; };
+        for(std::size_t k = 0; k < rounds.size(); ++k)
+        {
+          auto r = ES::refine_by_gradient(tr, value, rounds[k], options, criterion, constraints);
+          r.rounds.back().round = k + 1;
+          progress(r.rounds.back());
+          total.rounds.push_back(r.rounds.back());
+          total.sites_inserted += r.sites_inserted;
+          total.sites_refused += r.sites_refused;
+          for(int s = 0; s < ES::number_of_flip_kinds; ++s) total.swaps[s] += r.swaps[s];
+        }
+      }
+      return 0;
+    });
+  });
+
+  Atomic_files files;
+  add_mesh_files(files, o.output, tr, in);
+  write_rounds(files, o.history, total);
+  files.commit();
+  std::cout << "refine by " << o.by << ": " << total.sites_inserted << " sites inserted, " << total.sites_refused
+            << " refused (outside the domain or on a constrained face); vertices " << tr.number_of_vertices()
+            << ", cells " << tr.number_of_finite_cells();
+  if(o.by == "aspect-ratio")
+    std::cout << "; worst refinable aspect ratio " << total.rounds.front().worst_refinable << " -> "
+              << total.rounds.back().worst_refinable << (total.target_met ? " (target met)" : " (target not met)");
+  std::cout << '\n';
+  return 0;
+}
+
+/// edge_swap stats: counts, extremes and histograms of dihedral angles and
+/// aspect ratios (over the cells of the domain), to standard output and, with
+/// `json`, to a file.
+inline int run_stats(const std::string& path, const std::string& json)
+{
+  Triangulation tr;
+  const Input in = read_mesh(path, tr);
+  std::vector<double> angles, edge_ratio, radius_ratio;
+  std::size_t cells = 0;
+  for(auto c : tr.finite_cell_handles())
+  {
+    if(in.has_references && c->info().subdomain == 0) continue;
+    ++cells;
+    const auto& a = c->vertex(0)->point(); const auto& b = c->vertex(1)->point();
+    const auto& d = c->vertex(2)->point(); const auto& e = c->vertex(3)->point();
+    for(double x : ES::dihedral_angles(a, b, d, e)) angles.push_back(x);
+    edge_ratio.push_back(ES::edge_length_ratio(a, b, d, e));
+    radius_ratio.push_back(ES::radius_ratio(a, b, d, e));
+  }
+  if(cells == 0) throw IO::Input_error(path + ": no tetrahedron in the domain (every reference is 0)");
+  auto histogram = [](const std::vector<double>& v, double lo, double width, std::size_t bins) {
+    std::vector<std::size_t> h(bins, 0);
+    for(double x : v) h[std::min(bins - 1, std::size_t(std::max(0.0, (x - lo) / width)))]++;
+    return h;
+  };
+  auto range = [](const std::vector<double>& v) {
+    return std::make_pair(*std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()));
+  };
+  const auto [amin, amax] = range(angles);
+  const auto [emin, emax] = range(edge_ratio);
+  const auto [rmin, rmax] = range(radius_ratio);
+  const auto angle_histogram = histogram(angles, 0, 5, 36);       // 5-degree bins
+  const auto edge_histogram = histogram(edge_ratio, 1, 0.25, 40);  // 1 to 11
+  const auto radius_histogram = histogram(radius_ratio, 3, 1, 40); // 3 (regular) to 43
+
+  std::cout << path << ": vertices " << tr.number_of_vertices() << ", edges " << tr.number_of_finite_edges()
+            << ", faces " << tr.number_of_finite_facets() << ", cells " << tr.number_of_finite_cells()
+            << " (in the domain: " << cells << ")\n"
+            << "  dihedral angles: min " << amin << ", max " << amax << " degrees\n"
+            << "  edge length ratio: min " << emin << ", max " << emax << "\n"
+            << "  radius ratio (3 for a regular tetrahedron): min " << rmin << ", max " << rmax << "\n"
+            << "  dihedral angle histogram (5-degree bins from 0):";
+  for(auto n : angle_histogram) std::cout << ' ' << n;
+  std::cout << "\n  edge length ratio histogram (0.25 bins from 1):";
+  for(auto n : edge_histogram) std::cout << ' ' << n;
+  std::cout << '\n';
+  if(!json.empty())
+  {
+    Atomic_files files;
+    files.add(json, [&](std::ostream& out) {
+      nlohmann::json j = {{"mesh", path},
+                          {"vertices", tr.number_of_vertices()},
+                          {"cells", tr.number_of_finite_cells()},
+                          {"cells_in_domain", cells},
+                          {"dihedral_angle", {{"min", amin}, {"max", amax}, {"bin_start", 0}, {"bin_width", 5}, {"histogram", angle_histogram}}},
+                          {"edge_length_ratio", {{"min", emin}, {"max", emax}, {"bin_start", 1}, {"bin_width", 0.25}, {"histogram", edge_histogram}}},
+                          {"radius_ratio", {{"min", rmin}, {"max", rmax}, {"bin_start", 3}, {"bin_width", 1}, {"histogram", radius_histogram}}}};
+      out << j.dump(1) << '\n';
+    });
+    files.commit();
+  }
+  return 0;
+}
+
+} // namespace edge_swap
+
+#endif
