@@ -7,65 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
+#include "program_runner.h"
 
 using namespace test;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct Run
-{
-  int exit_code;
-  std::string out, err;
-};
-
-class Workdir
-{
-public:
-  Workdir()
-  {
-    static int counter = 0;
-    dir_ = fs::temp_directory_path() / ("edge_swap_test_" + std::to_string(::getpid()) + "_" + std::to_string(++counter));
-    fs::create_directories(dir_);
-  }
-  ~Workdir() { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  void write(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
-
-  static std::string slurp(const std::string& p)
-  {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  Run run(const std::string& args) const
-  {
-    const std::string cmd = std::string(EDGE_SWAP_BINARY) + " " + args + " > " + path("stdout") + " 2> " + path("stderr");
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
-  }
-
-  /// Files in the directory other than the inputs and the captured streams.
-  std::size_t outputs(const std::vector<std::string>& inputs) const
-  {
-    std::size_t n = 0;
-    for(const auto& e : fs::directory_iterator(dir_))
-    {
-      const std::string name = e.path().filename().string();
-      if(name == "stdout" || name == "stderr") continue;
-      if(std::find(inputs.begin(), inputs.end(), name) == inputs.end()) ++n;
-    }
-    return n;
-  }
-
-private:
-  fs::path dir_;
-};
 
 const std::string cube_node = "# the corners of a unit cube\n8 3 0 0\n"
                               "1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 0 0 1\n6 1 0 1\n7 0 1 1\n8 1 1 1\n";
@@ -202,7 +149,7 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
       {"optimize " + in + out + " --criterion fastest", "optimize " + in + out + " --criterion minmax-dihedral --helper",
        "optimize " + in + out + " --start sideways", "optimize " + in + out + " --start scramble:x",
        "optimize " + in + out + " --order backwards", "optimize " + in + out + " --perturb maybe",
-       "optimize " + in + " -o " + w.path("out.mesh"), "optimize " + in + out + " --max-cycles -3",
+       "optimize " + in + " -o " + w.path("out.obj"), "optimize " + in + out + " --max-cycles -3",
        "optimize " + w.path("missing.node") + out, "optimize " + w.path("cube.txt") + out, "frobnicate",
        "check " + w.path("missing.ele"), "check " + in})
   {

@@ -25,7 +25,9 @@ typedef CGAL::Mesh_triangulation_3<Domain>::type Mesh_tr;
 typedef CGAL::Mesh_complex_3_in_triangulation_3<Mesh_tr, Domain::Corner_index, Domain::Curve_index> C3t3;
 typedef CGAL::Mesh_criteria_3<Mesh_tr> Criteria;
 
-// 1 in the flow region (inside the box, outside both spheres), else 0.
+// 1 in the flow region, 2 and 3 inside the spheres, 0 outside the box. The
+// spheres are meshed as subdomains of their own so that Mesh_3 refines
+// their inside and cannot miss their surfaces; they become holes (0) after.
 struct Flow_region
 {
   Two_spheres g;
@@ -33,8 +35,8 @@ struct Flow_region
   {
     for(int c = 0; c < 3; ++c)
       if(p[c] < g.box_min[c] || p[c] > g.box_max[c]) return 0;
-    for(double cx : g.center_x)
-      if(CGAL::squared_distance(p, K::Point_3(cx, 0, 0)) < g.radius * g.radius) return 0;
+    for(int s = 0; s < 2; ++s)
+      if(CGAL::squared_distance(p, K::Point_3(g.center_x[s], 0, 0)) < g.radius * g.radius) return 2 + s;
     return 1;
   }
 };
@@ -75,6 +77,19 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
       edges.push_back({corner(a, 0, b), corner(a, 1, b)});
       edges.push_back({corner(a, b, 0), corner(a, b, 1)});
     }
+  // A great circle on each sphere (closed polyline): Mesh_3 finds a surface
+  // only where its refinement meets it, and the spheres are small.
+  for(double cx : g.center_x)
+  {
+    std::vector<K::Point_3> circle;
+    const int n = 256;
+    for(int k = 0; k <= n; ++k)
+    {
+      const double t = 2 * CGAL_PI * (k % n) / n;
+      circle.emplace_back(cx + g.radius * std::cos(t), g.radius * std::sin(t), 0);
+    }
+    edges.push_back(circle);
+  }
   domain.add_features(edges.begin(), edges.end());
 
   namespace params = CGAL::parameters;
@@ -84,6 +99,9 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
   std::cerr << "mesh-domain: meshing two-spheres with size " << size << " (CGAL Mesh_3)\n";
   const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
   const Mesh_tr& mtr = c3t3.triangulation();
+  std::map<int, int> by_label;
+  for(auto c : mtr.finite_cell_handles()) by_label[c3t3.subdomain_index(c)]++;
+  for(auto [l, n] : by_label) std::cerr << "label " << l << ": " << n << " cells\n";
 
   // The whole triangulation, bare points (protecting balls' weights dropped).
   Input in;
@@ -98,7 +116,7 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
   for(auto c : mtr.finite_cell_handles())
   {
     in.cells.push_back({index[c->vertex(0)], index[c->vertex(1)], index[c->vertex(2)], index[c->vertex(3)]});
-    in.cell_references.push_back(c3t3.is_in_complex(c) ? 1 : 0);
+    in.cell_references.push_back(c3t3.subdomain_index(c) == 1 ? 1 : 0);
   }
   for(auto it = c3t3.facets_in_complex_begin(); it != c3t3.facets_in_complex_end(); ++it)
   {

@@ -189,9 +189,10 @@ Refinement_report refine_by_aspect_ratio(Tr& tr, double target, Aspect_ratio_def
       if(!constraints.is_in_domain(tr, c)) continue;
       const double ratio = internal::cell_aspect_ratio<Tr>(c, definition);
       r.worst = (std::max)(r.worst, ratio);
-      if(ratio <= target || !internal::is_refinable(tr, c, constraints)) continue;
+      // The walk to the circumcenter only for a cell that could matter.
+      if((ratio <= target && ratio <= r.worst_refinable) || !internal::is_refinable(tr, c, constraints)) continue;
       r.worst_refinable = (std::max)(r.worst_refinable, ratio);
-      heap.push(internal::heap_entry<Tr>(c, ratio));
+      if(ratio > target) heap.push(internal::heap_entry<Tr>(c, ratio));
     }
     report.rounds.push_back(r);
     if(options.round_visitor) options.round_visitor(r);
