@@ -3,7 +3,7 @@
 # Run as root on Debian 12 (apt-get). Called by the two README commands.
 set -euo pipefail
 
-packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev catch2 libcli11-dev nlohmann-json3-dev)
+packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib)
 # The benchmarks compare with TetGen when it is there.
 packages+=(tetgen)
 
