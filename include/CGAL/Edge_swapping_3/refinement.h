@@ -103,6 +103,30 @@ std::array<double, 4> barycentric_weights(const Tr& tr, typename Tr::Cell_handle
   return w;
 }
 
+// Where the circumcenter of finite cell c falls (the walk starts at c: the
+// paper notes the site need not lie in it); true when a site may go there
+// (the paper's "refinable" cells: circumcenter in the domain).
+template <class Tr, class Constraints>
+bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints,
+                         typename Tr::Point& p, typename Tr::Cell_handle& at)
+{
+  p = tr.geom_traits().construct_circumcenter_3_object()(c->vertex(0)->point(), c->vertex(1)->point(),
+                                                          c->vertex(2)->point(), c->vertex(3)->point());
+  typename Tr::Locate_type lt;
+  int li, lj;
+  at = tr.locate(p, lt, li, lj, c);
+  return lt != Tr::VERTEX && lt != Tr::OUTSIDE_CONVEX_HULL && lt != Tr::OUTSIDE_AFFINE_HULL &&
+         split_is_allowed(tr, at, lt, li, lj, constraints);
+}
+
+template <class Tr, class Constraints>
+bool is_refinable(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints)
+{
+  typename Tr::Point p;
+  typename Tr::Cell_handle at;
+  return locate_circumcenter(tr, c, constraints, p, at);
+}
+
 // Inserts a site at the circumcenter of finite cell c; returns the new vertex
 // or the default handle when the site is refused.
 template <class Tr, class Criterion, class Constraints>
@@ -111,15 +135,9 @@ typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle 
                                                const Refinement_options<Tr>& options,
                                                Refinement_report& report)
 {
-  const auto& gt = tr.geom_traits();
-  const auto p = gt.construct_circumcenter_3_object()(c->vertex(0)->point(), c->vertex(1)->point(),
-                                                       c->vertex(2)->point(), c->vertex(3)->point());
-  typename Tr::Locate_type lt;
-  int li, lj;
-  // The walk starts at the cell itself (paper: the site need not lie in it).
-  const auto at = tr.locate(p, lt, li, lj, c);
-  if(lt == Tr::VERTEX || lt == Tr::OUTSIDE_CONVEX_HULL || lt == Tr::OUTSIDE_AFFINE_HULL ||
-     !split_is_allowed(tr, at, lt, li, lj, constraints))
+  typename Tr::Point p;
+  typename Tr::Cell_handle at;
+  if(!locate_circumcenter(tr, c, constraints, p, at))
   {
     ++report.sites_refused;
     return typename Tr::Vertex_handle();
@@ -132,20 +150,6 @@ typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle 
   ++report.sites_inserted;
   if(options.new_vertex) options.new_vertex(r.vertex, where);
   return r.vertex;
-}
-
-// Whether the circumcenter of finite cell c lies in the domain (the paper's
-// "refinable" cells).
-template <class Tr, class Constraints>
-bool is_refinable(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints)
-{
-  const auto p = tr.geom_traits().construct_circumcenter_3_object()(
-      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
-  typename Tr::Locate_type lt;
-  int li, lj;
-  const auto at = tr.locate(p, lt, li, lj, c);
-  return lt != Tr::VERTEX && lt != Tr::OUTSIDE_CONVEX_HULL && lt != Tr::OUTSIDE_AFFINE_HULL &&
-         split_is_allowed(tr, at, lt, li, lj, constraints);
 }
 
 template <class Tr>

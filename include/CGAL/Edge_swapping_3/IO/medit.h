@@ -62,18 +62,7 @@ public:
   {
     std::string token;
     if(!next(token)) fail(std::string("the file ends before ") + what);
-    std::istringstream t(token);
-    T value;
-    if(!(t >> value) || t.rdbuf()->in_avail() != 0)
-    {
-      if constexpr(std::is_floating_point<T>::value)
-      {
-        const double d = std::strtod(token.c_str(), nullptr);
-        if(std::isnan(d) || std::isinf(d)) fail(std::string(what) + " is not finite: " + token);
-      }
-      fail(std::string("cannot read ") + what + " from '" + token + "'");
-    }
-    return value;
+    return parse_token<T>(token, what, [this](const std::string& m) { fail(m); });
   }
 
   [[noreturn]] void fail(const std::string& what) const

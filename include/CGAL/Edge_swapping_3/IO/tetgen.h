@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -36,6 +37,25 @@ struct Node_file
 };
 
 namespace internal {
+
+// Reads a number from `token`; `fail(message)` must throw. NaN and
+// infinities are named, not reported as garbage.
+template <class T, class Fail>
+T parse_token(const std::string& token, const char* what, const Fail& fail)
+{
+  std::istringstream t(token);
+  T value;
+  if(!(t >> value) || t.rdbuf()->in_avail() != 0)
+  {
+    if constexpr(std::is_floating_point<T>::value)
+    {
+      const double d = std::strtod(token.c_str(), nullptr);
+      if(std::isnan(d) || std::isinf(d)) fail(std::string(what) + " is not finite: " + token);
+    }
+    fail(std::string("cannot read ") + what + " from '" + token + "'");
+  }
+  return value;
+}
 
 class Line_reader
 {
@@ -72,19 +92,7 @@ public:
   {
     std::string token;
     if(!(line >> token)) fail(std::string("missing ") + what);
-    std::istringstream t(token);
-    T value;
-    if(!(t >> value) || t.rdbuf()->in_avail() != 0)
-    {
-      // NaN and infinities must be named, not reported as garbage.
-      if constexpr(std::is_floating_point<T>::value)
-      {
-        const double d = std::strtod(token.c_str(), nullptr);
-        if(std::isnan(d) || std::isinf(d)) fail(std::string(what) + " is not finite: " + token);
-      }
-      fail(std::string("cannot read ") + what + " from '" + token + "'");
-    }
-    return value;
+    return parse_token<T>(token, what, [this](const std::string& m) { fail(m); });
   }
 
   static bool more(std::istringstream& line)
