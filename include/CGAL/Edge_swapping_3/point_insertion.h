@@ -5,7 +5,7 @@
 //
 // For the Delaunay criterion the front only moves outward: only the facets
 // opposite the new vertex (its link) are tested, and a flip puts new link
-// facets on the stack. For any other criterion every facet of a changed cell
+// facets in the queue. For any other criterion every facet of a changed cell
 // is tested again (back-propagation), as the paper prescribes.
 
 #ifndef CGAL_EDGE_SWAPPING_3_POINT_INSERTION_H
@@ -44,7 +44,7 @@ struct Insertion_result
 
 namespace internal {
 
-// A facet of the link of v kept on the stack: the cell that holds v and the
+// A facet of the link of v kept in the queue: the cell that holds v and the
 // facet, and the facet's vertices, which tell whether a flip has since reused
 // the cell for another tetrahedron.
 template <class Tr>
@@ -55,11 +55,11 @@ struct Link_facet
 };
 
 template <class Tr>
-void push_link_facet(std::vector<Link_facet<Tr>>& stack, typename Tr::Cell_handle c,
+void push_link_facet(std::vector<Link_facet<Tr>>& queue, typename Tr::Cell_handle c,
                      typename Tr::Vertex_handle v)
 {
   const int i = c->index(v);
-  stack.push_back({c, {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}});
+  queue.push_back({c, {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}});
 }
 
 // The current index of the link facet opposite v, or -1 if the cell no longer holds it.
@@ -100,30 +100,104 @@ bool plan_link_flip(const Tr& tr, typename Tr::Cell_handle c, int i, Flip_plan<T
          worst_orientation(tr, plan) == POSITIVE;
 }
 
+enum Link_flip_outcome { LINK_DELAUNAY, LINK_FLIPPED, LINK_NOT_FLIPPABLE_NOW, LINK_NEEDS_GENERAL_FLIP };
+
+// The finite link facet (c, i) of v, tested and, in the two common cases,
+// flipped in place by CGAL's own combinatorial flips
+// (Triangulation_data_structure_3::flip_flippable), for a triangulation whose
+// cells carry no data: the 2-3 flip when the apex e across the facet lies
+// strictly inside the wedge of c at that facet, the 3-2 flip when it lies
+// strictly beyond exactly one facet of c through v and the edge opposite has
+// three cells. The same exact tests as is_locally_delaunay and classify_facet
+// decide it. A degenerate or hull case is left to the general planned flip.
+template <class Tr>
+Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int i,
+                                         typename Tr::Vertex_handle v, Perturbation perturbation,
+                                         std::vector<Link_facet<Tr>>& queue,
+                                         Insertion_result<Tr>& result)
+{
+  const auto n = c->neighbor(i);
+  if(tr.is_infinite(c) || tr.is_infinite(n)) return LINK_NEEDS_GENERAL_FLIP;
+  const auto apex = n->vertex(n->index(c));
+  const auto& e = apex->point();
+  if(side_of_oriented_sphere(tr.geom_traits(), c->vertex(0)->point(), c->vertex(1)->point(),
+                             c->vertex(2)->point(), c->vertex(3)->point(), e,
+                             perturbation == CGAL_PERTURBATION) != ON_POSITIVE_SIDE)
+    return LINK_DELAUNAY;
+  auto orientation = tr.geom_traits().orientation_3_object();
+  int k_neg = -1;
+  for(int k = 0; k < 4; ++k)
+  {
+    if(k == i) continue;
+    std::array<const typename Tr::Point*, 4> p;
+    for(int m = 0; m < 4; ++m) p[m] = (m == k) ? &e : &c->vertex(m)->point();
+    const Orientation o = orientation(*p[0], *p[1], *p[2], *p[3]);
+    if(o == COPLANAR) return LINK_NEEDS_GENERAL_FLIP;
+    if(o == NEGATIVE)
+    {
+      if(k_neg >= 0) return LINK_NOT_FLIPPABLE_NOW; // concave at two edges
+      k_neg = k;
+    }
+  }
+  auto& tds = tr.tds();
+  if(k_neg < 0)
+  {
+    tds.flip_flippable(c, i); // c and n become two of the new cells
+    const auto third = c->neighbor((i + 2) & 3);
+    push_link_facet(queue, c, v);
+    push_link_facet(queue, n, v);
+    push_link_facet(queue, third, v);
+    ++result.swaps[FLIP_2_3];
+    return LINK_FLIPPED;
+  }
+  const auto t = c->neighbor(k_neg);
+  if(!t->has_vertex(apex)) return LINK_NOT_FLIPPABLE_NOW;
+  int a = -1, b = -1;
+  for(int k = 0; k < 4; ++k)
+    if(k != i && k != k_neg) (a < 0 ? a : b) = k;
+  tds.flip_flippable(c, a, b); // c goes; n and t become the two new cells
+  push_link_facet(queue, n, v);
+  push_link_facet(queue, t, v);
+  ++result.swaps[FLIP_3_2];
+  return LINK_FLIPPED;
+}
+
 // Flips outward from the new vertex v until its link is locally Delaunay.
 template <class Tr, class Constraints>
 void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation perturbation,
                            const Constraints& constraints, Insertion_result<Tr>& result)
 {
   typedef typename Tr::Cell_handle Cell_handle;
-  std::vector<Link_facet<Tr>> stack, unflipped;
-  std::vector<Cell_handle> star;
+  // Kept from one insertion to the next: an insertion allocates nothing.
+  thread_local std::vector<Link_facet<Tr>> queue, unflipped;
+  thread_local std::vector<Cell_handle> star;
+  queue.clear();
+  unflipped.clear();
+  star.clear();
   tr.incident_cells(v, std::back_inserter(star));
-  for(Cell_handle c : star) push_link_facet(stack, c, v);
+  for(Cell_handle c : star) push_link_facet(queue, c, v);
 
   Flip_plan<Tr> plan;
   std::array<Cell_handle, 4> created;
-  // A facet that cannot be flipped now is kept aside and tried again once the
-  // stack is empty, as long as flips are still being made.
+  // First in, first out: fewer facets are met before they can be flipped than
+  // with a stack. A facet that cannot be flipped now is kept aside and tried
+  // again once the queue is done, as long as flips are still being made.
   for(bool progress = true; progress;)
   {
     progress = false;
-    while(!stack.empty())
+    for(std::size_t head = 0; head < queue.size(); ++head)
     {
-      const Link_facet<Tr> f = stack.back();
-      stack.pop_back();
+      const Link_facet<Tr> f = queue[head];
       const int i = current_link_index(tr, f, v);
-      if(i < 0 || is_locally_delaunay(tr, f.cell, i, perturbation)) continue;
+      if(i < 0) continue;
+      if constexpr(std::is_same<Constraints, No_constraints>::value)
+      {
+        const auto outcome = flip_common_link_facet(tr, f.cell, i, v, perturbation, queue, result);
+        if(outcome == LINK_DELAUNAY) continue;
+        if(outcome == LINK_FLIPPED) { progress = true; continue; }
+        if(outcome == LINK_NOT_FLIPPABLE_NOW) { unflipped.push_back(f); continue; }
+      }
+      if(is_locally_delaunay(tr, f.cell, i, perturbation)) continue;
       if(!plan_link_flip(tr, f.cell, i, plan) || !flip_respects_constraints(tr, plan, constraints))
       {
         unflipped.push_back(f);
@@ -133,9 +207,10 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
       ++result.swaps[plan.kind];
       progress = true;
       for(int k = 0; k < n; ++k)
-        if(created[k]->has_vertex(v)) push_link_facet(stack, created[k], v);
+        if(created[k]->has_vertex(v)) push_link_facet(queue, created[k], v);
     }
-    if(progress) std::swap(stack, unflipped);
+    queue.clear();
+    if(progress) std::swap(queue, unflipped);
   }
   for(const auto& f : unflipped)
   {

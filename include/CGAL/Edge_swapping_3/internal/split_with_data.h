@@ -45,6 +45,7 @@ bool split_is_allowed(const Tr& tr, typename Tr::Cell_handle c, typename Tr::Loc
                       int li, int lj, const Constraints& constraints)
 {
   if(lt == Tr::OUTSIDE_AFFINE_HULL) return false;
+  if constexpr(std::is_same<Constraints, No_constraints>::value) return true;
   if(lt == Tr::OUTSIDE_CONVEX_HULL) return constraints.is_in_domain(tr, c);
   const auto cells = cells_of_split(tr, c, lt, li, lj);
   for(const auto& d : cells)
