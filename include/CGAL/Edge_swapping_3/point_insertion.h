@@ -44,34 +44,33 @@ struct Insertion_result
 
 namespace internal {
 
-// A facet of the link of v kept in the queue: the cell that holds v and the
-// facet, and the facet's vertices, which tell whether a flip has since reused
-// the cell for another tetrahedron.
+// The link of v is kept as a queue of cells that hold v, each standing for
+// its facet opposite v. A cell is queued at most once: its TDS mark (which
+// CGAL's own operations clear after use) says it is queued. A flip may reuse
+// a queued cell for another tetrahedron through v: the entry then stands for
+// the new link facet, which needs the test anyway. Every cell a link flip
+// creates or reuses holds v, so a queued cell that is still in use and no
+// longer holds v can only come from the general flip, and is skipped.
 template <class Tr>
-struct Link_facet
-{
-  typename Tr::Cell_handle cell;
-  std::array<typename Tr::Vertex_handle, 3> v;
-};
+using Link_queue = std::vector<typename Tr::Cell_handle>;
 
 template <class Tr>
-void push_link_facet(std::vector<Link_facet<Tr>>& queue, typename Tr::Cell_handle c,
-                     typename Tr::Vertex_handle v)
+void push_link_cell(Link_queue<Tr>& queue, typename Tr::Cell_handle c)
 {
-  const int i = c->index(v);
-  queue.push_back({c, {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)}});
+  if(c->tds_data().is_in_conflict()) return; // queued already
+  c->tds_data().mark_in_conflict();
+  queue.push_back(c);
 }
 
-// The current index of the link facet opposite v, or -1 if the cell no longer holds it.
+// Takes a cell off the queue: the index of v in it, or -1 if it was deleted
+// or no longer holds v.
 template <class Tr>
-int current_link_index(const Tr& tr, const Link_facet<Tr>& f, typename Tr::Vertex_handle v)
+int pop_link_cell(const Tr& tr, typename Tr::Cell_handle c, typename Tr::Vertex_handle v)
 {
-  if(!tr.tds().cells().is_used(f.cell)) return -1;
+  if(!tr.tds().cells().is_used(c)) return -1;
+  c->tds_data().clear();
   int i;
-  if(!f.cell->has_vertex(v, i)) return -1;
-  for(const auto& w : f.v)
-    if(!f.cell->has_vertex(w)) return -1;
-  return i;
+  return c->has_vertex(v, i) ? i : -1;
 }
 
 // The flip that makes the link facet (c, i) of v Delaunay, if it can be made
@@ -113,7 +112,7 @@ enum Link_flip_outcome { LINK_DELAUNAY, LINK_FLIPPED, LINK_NOT_FLIPPABLE_NOW, LI
 template <class Tr>
 Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int i,
                                          typename Tr::Vertex_handle v, Perturbation perturbation,
-                                         std::vector<Link_facet<Tr>>& queue,
+                                         Link_queue<Tr>& queue,
                                          Insertion_result<Tr>& result)
 {
   const auto n = c->neighbor(i);
@@ -144,9 +143,9 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
   {
     tds.flip_flippable(c, i); // c and n become two of the new cells
     const auto third = c->neighbor((i + 2) & 3);
-    push_link_facet(queue, c, v);
-    push_link_facet(queue, n, v);
-    push_link_facet(queue, third, v);
+    push_link_cell<Tr>(queue, c);
+    push_link_cell<Tr>(queue, n);
+    push_link_cell<Tr>(queue, third);
     ++result.swaps[FLIP_2_3];
     return LINK_FLIPPED;
   }
@@ -156,8 +155,8 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
   for(int k = 0; k < 4; ++k)
     if(k != i && k != k_neg) (a < 0 ? a : b) = k;
   tds.flip_flippable(c, a, b); // c goes; n and t become the two new cells
-  push_link_facet(queue, n, v);
-  push_link_facet(queue, t, v);
+  push_link_cell<Tr>(queue, n);
+  push_link_cell<Tr>(queue, t); // queued already if its old link facet was not yet tested
   ++result.swaps[FLIP_3_2];
   return LINK_FLIPPED;
 }
@@ -169,13 +168,12 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
 {
   typedef typename Tr::Cell_handle Cell_handle;
   // Kept from one insertion to the next: an insertion allocates nothing.
-  thread_local std::vector<Link_facet<Tr>> queue, unflipped;
-  thread_local std::vector<Cell_handle> star;
+  thread_local Link_queue<Tr> queue, unflipped, star;
   queue.clear();
   unflipped.clear();
   star.clear();
   tr.incident_cells(v, std::back_inserter(star));
-  for(Cell_handle c : star) push_link_facet(queue, c, v);
+  for(Cell_handle c : star) push_link_cell<Tr>(queue, c);
 
   Flip_plan<Tr> plan;
   std::array<Cell_handle, 4> created;
@@ -187,35 +185,39 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
     progress = false;
     for(std::size_t head = 0; head < queue.size(); ++head)
     {
-      const Link_facet<Tr> f = queue[head];
-      const int i = current_link_index(tr, f, v);
+      const Cell_handle c = queue[head];
+      const int i = pop_link_cell(tr, c, v);
       if(i < 0) continue;
       if constexpr(std::is_same<Constraints, No_constraints>::value)
       {
-        const auto outcome = flip_common_link_facet(tr, f.cell, i, v, perturbation, queue, result);
+        const auto outcome = flip_common_link_facet(tr, c, i, v, perturbation, queue, result);
         if(outcome == LINK_DELAUNAY) continue;
         if(outcome == LINK_FLIPPED) { progress = true; continue; }
-        if(outcome == LINK_NOT_FLIPPABLE_NOW) { unflipped.push_back(f); continue; }
+        if(outcome == LINK_NOT_FLIPPABLE_NOW) { unflipped.push_back(c); continue; }
       }
-      if(is_locally_delaunay(tr, f.cell, i, perturbation)) continue;
-      if(!plan_link_flip(tr, f.cell, i, plan) || !flip_respects_constraints(tr, plan, constraints))
+      if(is_locally_delaunay(tr, c, i, perturbation)) continue;
+      if(!plan_link_flip(tr, c, i, plan) || !flip_respects_constraints(tr, plan, constraints))
       {
-        unflipped.push_back(f);
+        unflipped.push_back(c);
         continue;
       }
       const int n = execute_flip(tr, plan, created, constraints);
       ++result.swaps[plan.kind];
       progress = true;
       for(int k = 0; k < n; ++k)
-        if(created[k]->has_vertex(v)) push_link_facet(queue, created[k], v);
+        if(created[k]->has_vertex(v)) push_link_cell<Tr>(queue, created[k]);
     }
     queue.clear();
-    if(progress) std::swap(queue, unflipped);
+    if(!progress) break;
+    for(Cell_handle c : unflipped)
+      if(tr.tds().cells().is_used(c)) push_link_cell<Tr>(queue, c);
+    unflipped.clear();
   }
-  for(const auto& f : unflipped)
+  for(Cell_handle c : unflipped)
   {
-    const int i = current_link_index(tr, f, v);
-    if(i >= 0 && !is_locally_delaunay(tr, f.cell, i, perturbation)) ++result.stuck_facets;
+    int i;
+    if(tr.tds().cells().is_used(c) && c->has_vertex(v, i) && !is_locally_delaunay(tr, c, i, perturbation))
+      ++result.stuck_facets;
   }
 }
 
