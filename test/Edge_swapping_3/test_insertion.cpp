@@ -4,6 +4,7 @@
 
 #include "test_common.h"
 #include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
+#include <cmath>
 
 using namespace test;
 
@@ -117,4 +118,62 @@ TEST_CASE("Insertion under the MinMax criterion keeps a valid triangulation and 
   REQUIRE(tr.is_valid(true));
   REQUIRE(exact_volume(tr) == volume);
   REQUIRE(swaps > 0);
+}
+
+TEST_CASE("The three orientations of a link flip agree with the kernel's Orientation_3", "[insertion][exactness]")
+{
+  // The batched semi-static filter must give the kernel's exact sign on every
+  // input: random, nearly coplanar (one ulp off the plane), exactly coplanar,
+  // and coordinates near the underflow and overflow guards.
+  const auto orientation = K().orientation_3_object();
+  std::size_t zeros = 0;
+  for(unsigned seed = 1; seed <= 5; ++seed)
+  {
+    INFO("seed " << seed);
+    CGAL::Random r(seed);
+    for(double scale : {1.0, 1e-100, 1e-300, 1e100, 1e150})
+      for(int trial = 0; trial < 400; ++trial)
+      {
+        std::array<Point, 4> cell;
+        for(auto& q : cell) q = Point(r.get_double(-1, 1) * scale, r.get_double(-1, 1) * scale, r.get_double(-1, 1) * scale);
+        if(orientation(cell[0], cell[1], cell[2], cell[3]) == CGAL::NEGATIVE) std::swap(cell[0], cell[1]);
+        if(orientation(cell[0], cell[1], cell[2], cell[3]) != CGAL::POSITIVE) continue;
+        Point e;
+        switch(trial % 4)
+        {
+        case 0: // anywhere
+          e = Point(r.get_double(-1, 1) * scale, r.get_double(-1, 1) * scale, r.get_double(-1, 1) * scale);
+          break;
+        case 1: // on a vertex: every determinant with two equal rows is exactly zero
+          e = cell[trial % 4];
+          break;
+        case 2: // on an integer grid with the vertices: exactly coplanar quadruples
+          for(auto& q : cell) q = Point(r.get_int(0, 3), r.get_int(0, 3), r.get_int(0, 3));
+          if(orientation(cell[0], cell[1], cell[2], cell[3]) == CGAL::NEGATIVE) std::swap(cell[0], cell[1]);
+          e = Point(r.get_int(0, 3), r.get_int(0, 3), r.get_int(0, 3));
+          break;
+        default: // one ulp off a vertex: nearly every determinant is tiny
+        {
+          const Point& q = cell[trial % 4];
+          e = Point(std::nextafter(q.x(), 2 * scale), q.y(), q.z());
+        }
+        }
+        if(orientation(cell[0], cell[1], cell[2], cell[3]) != CGAL::POSITIVE) continue;
+        const std::array<const Point*, 4> p = {&cell[0], &cell[1], &cell[2], &cell[3]};
+        for(int i = 0; i < 4; ++i)
+        {
+          const auto o = ES::internal::orientations_with_apex(K(), p, i, e);
+          for(int k = 0; k < 4; ++k)
+          {
+            if(k == i) continue;
+            auto q = cell;
+            q[k] = e;
+            const auto exact = orientation(q[0], q[1], q[2], q[3]);
+            REQUIRE(o[k] == exact);
+            if(exact == CGAL::ZERO) ++zeros;
+          }
+        }
+      }
+  }
+  REQUIRE(zeros > 100); // the degenerate cases were met
 }

@@ -14,6 +14,7 @@
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/internal/orientations_with_apex.h>
 #include <CGAL/Edge_swapping_3/internal/split_with_data.h>
 #include <array>
 #include <type_traits>
@@ -45,12 +46,14 @@ struct Insertion_result
 namespace internal {
 
 // The link of v is kept as a queue of cells that hold v, each standing for
-// its facet opposite v. A cell is queued at most once: its TDS mark (which
-// CGAL's own operations clear after use) says it is queued. A flip may reuse
-// a queued cell for another tetrahedron through v: the entry then stands for
-// the new link facet, which needs the test anyway. Every cell a link flip
-// creates or reuses holds v, so a queued cell that is still in use and no
-// longer holds v can only come from the general flip, and is skipped.
+// its facet opposite v. The cells' TDS mark (which CGAL's own operations
+// clear after use) keeps each cell queued at most once: a cell is marked
+// queued, or set aside (its facet could not be flipped yet), or clear. A flip
+// may reuse a queued cell for another tetrahedron through v: the entry then
+// stands for the new link facet, which needs the test anyway. Every cell a
+// link flip creates or reuses holds v, so a cell taken off the queue that is
+// still in use and no longer holds v can only come from the general flip, and
+// is skipped.
 template <class Tr>
 using Link_queue = std::vector<typename Tr::Cell_handle>;
 
@@ -62,6 +65,13 @@ void push_link_cell(Link_queue<Tr>& queue, typename Tr::Cell_handle c)
   queue.push_back(c);
 }
 
+template <class Tr>
+void set_link_cell_aside(Link_queue<Tr>& aside, typename Tr::Cell_handle c)
+{
+  c->tds_data().mark_on_boundary();
+  aside.push_back(c);
+}
+
 // Takes a cell off the queue: the index of v in it, or -1 if it was deleted
 // or no longer holds v.
 template <class Tr>
@@ -71,6 +81,14 @@ int pop_link_cell(const Tr& tr, typename Tr::Cell_handle c, typename Tr::Vertex_
   c->tds_data().clear();
   int i;
   return c->has_vertex(v, i) ? i : -1;
+}
+
+// Whether a cell set aside is still waiting: not deleted, nor queued again
+// (and maybe tested) since.
+template <class Tr>
+bool is_set_aside(const Tr& tr, typename Tr::Cell_handle c)
+{
+  return tr.tds().cells().is_used(c) && c->tds_data().is_on_boundary();
 }
 
 // The flip that makes the link facet (c, i) of v Delaunay, if it can be made
@@ -119,22 +137,37 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
   if(tr.is_infinite(c) || tr.is_infinite(n)) return LINK_NEEDS_GENERAL_FLIP;
   const auto apex = n->vertex(n->index(c));
   const auto& e = apex->point();
-  if(side_of_oriented_sphere(tr.geom_traits(), c->vertex(0)->point(), c->vertex(1)->point(),
-                             c->vertex(2)->point(), c->vertex(3)->point(), e,
+  // v in the sphere of n, as CGAL's conflict test asks (the same sign as
+  // the apex in the sphere of c).
+  if(side_of_oriented_sphere(tr.geom_traits(), n->vertex(0)->point(), n->vertex(1)->point(),
+                             n->vertex(2)->point(), n->vertex(3)->point(), v->point(),
                              perturbation == CGAL_PERTURBATION) != ON_POSITIVE_SIDE)
     return LINK_DELAUNAY;
-  auto orientation = tr.geom_traits().orientation_3_object();
+  // The signs of the barycentric coordinates of e in c (appendix A).
+  typedef typename Tr::Geom_traits Gt;
+  const std::array<const typename Tr::Point*, 4> p = {&c->vertex(0)->point(), &c->vertex(1)->point(),
+                                                      &c->vertex(2)->point(), &c->vertex(3)->point()};
+  std::array<Orientation, 4> o;
+  if constexpr(has_double_coordinates<Gt>())
+    o = orientations_with_apex(tr.geom_traits(), p, i, e);
+  else
+    for(int k = 0; k < 4; ++k)
+      if(k != i)
+      {
+        auto q = p;
+        q[k] = &e;
+        o[k] = tr.geom_traits().orientation_3_object()(*q[0], *q[1], *q[2], *q[3]);
+      }
   int k_neg = -1;
   for(int k = 0; k < 4; ++k)
   {
     if(k == i) continue;
-    std::array<const typename Tr::Point*, 4> p;
-    for(int m = 0; m < 4; ++m) p[m] = (m == k) ? &e : &c->vertex(m)->point();
-    const Orientation o = orientation(*p[0], *p[1], *p[2], *p[3]);
-    if(o == COPLANAR) return LINK_NEEDS_GENERAL_FLIP;
-    if(o == NEGATIVE)
+    if(o[k] == COPLANAR) return LINK_NEEDS_GENERAL_FLIP;
+    if(o[k] == NEGATIVE)
     {
-      if(k_neg >= 0) return LINK_NOT_FLIPPABLE_NOW; // concave at two edges
+      // Concave at the edge opposite k: flippable only if that edge has three
+      // cells and the apex is beyond no other facet through v.
+      if(k_neg >= 0 || !c->neighbor(k)->has_vertex(apex)) return LINK_NOT_FLIPPABLE_NOW;
       k_neg = k;
     }
   }
@@ -150,7 +183,6 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
     return LINK_FLIPPED;
   }
   const auto t = c->neighbor(k_neg);
-  if(!t->has_vertex(apex)) return LINK_NOT_FLIPPABLE_NOW;
   int a = -1, b = -1;
   for(int k = 0; k < 4; ++k)
     if(k != i && k != k_neg) (a < 0 ? a : b) = k;
@@ -193,12 +225,12 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
         const auto outcome = flip_common_link_facet(tr, c, i, v, perturbation, queue, result);
         if(outcome == LINK_DELAUNAY) continue;
         if(outcome == LINK_FLIPPED) { progress = true; continue; }
-        if(outcome == LINK_NOT_FLIPPABLE_NOW) { unflipped.push_back(c); continue; }
+        if(outcome == LINK_NOT_FLIPPABLE_NOW) { set_link_cell_aside<Tr>(unflipped, c); continue; }
       }
       if(is_locally_delaunay(tr, c, i, perturbation)) continue;
       if(!plan_link_flip(tr, c, i, plan) || !flip_respects_constraints(tr, plan, constraints))
       {
-        unflipped.push_back(c);
+        set_link_cell_aside<Tr>(unflipped, c);
         continue;
       }
       const int n = execute_flip(tr, plan, created, constraints);
@@ -210,14 +242,15 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
     queue.clear();
     if(!progress) break;
     for(Cell_handle c : unflipped)
-      if(tr.tds().cells().is_used(c)) push_link_cell<Tr>(queue, c);
+      if(is_set_aside(tr, c)) push_link_cell<Tr>(queue, c);
     unflipped.clear();
   }
   for(Cell_handle c : unflipped)
   {
+    if(!is_set_aside(tr, c)) continue;
+    c->tds_data().clear();
     int i;
-    if(tr.tds().cells().is_used(c) && c->has_vertex(v, i) && !is_locally_delaunay(tr, c, i, perturbation))
-      ++result.stuck_facets;
+    if(c->has_vertex(v, i) && !is_locally_delaunay(tr, c, i, perturbation)) ++result.stuck_facets;
   }
 }
 
