@@ -42,12 +42,38 @@ CGAL::Exact_rational volume_of(const IO::Medit_mesh& m, int reference)
   return v;
 }
 
-// Strictly inside the box of tools/edge_swap/flow_field.h. (The spheres are
-// not yet holes of the Mesh_3 mesh: see doc/Edge_swapping_3/user_manual.md.)
-bool in_flow_region(const P3& p)
+// Strictly inside the box of tools/edge_swap/flow_field.h.
+bool in_box(const P3& p)
 {
   return p[0] > -3 && p[0] < 7 && std::abs(p[1]) < 2.5 && std::abs(p[2]) < 2.5;
 }
+
+Point point_of(const P3& p) { return Point(p[0], p[1], p[2]); }
+
+// Whether p lies in or on a tetrahedron of reference 0 (a hole) of m (exact).
+bool in_a_hole(const IO::Medit_mesh& m, const P3& p)
+{
+  const Point q = point_of(p);
+  for(std::size_t k = 0; k < m.tetrahedra.size(); ++k)
+  {
+    if(m.tetrahedron_references[k] != 0) continue;
+    std::array<Point, 4> t;
+    for(int i = 0; i < 4; ++i) t[i] = point_of(m.points[m.tetrahedra[k][i]]);
+    const auto o = CGAL::orientation(t[0], t[1], t[2], t[3]);
+    bool inside = true;
+    for(int i = 0; i < 4 && inside; ++i)
+    {
+      auto u = t;
+      u[i] = q;
+      inside = CGAL::orientation(u[0], u[1], u[2], u[3]) != -o;
+    }
+    if(inside) return true;
+  }
+  return false;
+}
+
+// A site of the flow region: inside the box, in no hole.
+bool in_flow_region(const IO::Medit_mesh& m, const P3& p) { return in_box(p) && !in_a_hole(m, p); }
 
 void require_clean_rejection(const Workdir& w, const std::string& args, const std::string& what,
                              const std::vector<std::string>& inputs)
@@ -69,8 +95,27 @@ TEST_CASE("Two-spheres domain: refinement keeps the boundary and the flow region
   REQUIRE(r.exit_code == 0);
   const IO::Medit_mesh before = IO::read_medit_file(w.path("ts.mesh"));
   REQUIRE(before.tetrahedra.size() > 1000);
-  REQUIRE(std::set<int>(before.triangle_references.begin(), before.triangle_references.end()).count(1) == 1);
+  REQUIRE(std::set<int>(before.triangle_references.begin(), before.triangle_references.end()) == std::set<int>{1, 2, 3});
   REQUIRE(w.run("check " + w.path("ts.mesh")).exit_code == 0);
+  // Each sphere is a closed surface (every edge in two of its triangles), and
+  // the holes fill most of the two balls (an inscribed polyhedron is smaller).
+  for(int sphere : {2, 3})
+  {
+    INFO("sphere reference " << sphere);
+    std::map<std::pair<std::size_t, std::size_t>, int> edge_uses;
+    for(std::size_t k = 0; k < before.triangles.size(); ++k)
+      if(before.triangle_references[k] == sphere)
+        for(int i = 0; i < 3; ++i)
+        {
+          const auto a = before.triangles[k][i], b = before.triangles[k][(i + 1) % 3];
+          edge_uses[std::minmax(a, b)]++;
+        }
+    REQUIRE(edge_uses.size() >= 12);
+    for(const auto& e : edge_uses) REQUIRE(e.second == 2);
+  }
+  const double holes = CGAL::to_double(volume_of(before, 0)), balls = 2 * 4.0 / 3.0 * CGAL_PI * 0.125;
+  CHECK(holes > 0.7 * balls);
+  CHECK(holes < balls);
 
   r = w.run("refine " + w.path("ts.mesh") + " --by aspect-ratio --target 2.2 -o " + w.path("ar.mesh") +
             " --history " + w.path("ar.csv"));
@@ -79,7 +124,7 @@ TEST_CASE("Two-spheres domain: refinement keeps the boundary and the flow region
   REQUIRE(r.out.find("(target met)") != std::string::npos);
   const IO::Medit_mesh after = IO::read_medit_file(w.path("ar.mesh"));
   REQUIRE(after.points.size() > before.points.size());
-  for(std::size_t k = before.points.size(); k < after.points.size(); ++k) REQUIRE(in_flow_region(after.points[k]));
+  for(std::size_t k = before.points.size(); k < after.points.size(); ++k) REQUIRE(in_flow_region(before, after.points[k]));
   REQUIRE(boundary(after) == boundary(before));
   REQUIRE(volume_of(after, 1) == volume_of(before, 1));
   REQUIRE(w.run("check " + w.path("ar.mesh")).exit_code == 0);
@@ -89,7 +134,7 @@ TEST_CASE("Two-spheres domain: refinement keeps the boundary and the flow region
   REQUIRE(r.exit_code == 0);
   const IO::Medit_mesh g = IO::read_medit_file(w.path("g.mesh"));
   REQUIRE(g.points.size() == before.points.size() + 500);
-  for(std::size_t k = before.points.size(); k < g.points.size(); ++k) REQUIRE(in_flow_region(g.points[k]));
+  for(std::size_t k = before.points.size(); k < g.points.size(); ++k) REQUIRE(in_flow_region(before, g.points[k]));
   REQUIRE(boundary(g) == boundary(before));
   REQUIRE(volume_of(g, 1) == volume_of(before, 1));
 

@@ -1,9 +1,10 @@
 // edge_swap mesh-domain two-spheres: CGAL Mesh_3 meshes the flow region of
 // the paper's Fig. 12 case, a box around two spheres on the flow axis. The
-// box edges are protected as features, so the box stays a box; the whole
-// Mesh_3 triangulation is kept (cells outside the flow region, inside the
-// spheres, get subdomain 0), so the result triangulates the convex hull and
-// the swap and insertion functions can work on it.
+// box edges are protected as features, so the box stays a box; the spheres
+// are seeded with points on their surfaces, then refined. The whole Mesh_3
+// triangulation is kept (cells outside the flow region, inside the spheres,
+// get subdomain 0), so the result triangulates the convex hull and the swap
+// and insertion functions can work on it.
 
 #include "mesh_domain_command.h"
 #include "flow_field.h"
@@ -14,6 +15,7 @@
 #include <CGAL/Mesh_domain_with_polyline_features_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/make_mesh_3.h>
+#include <CGAL/refine_mesh_3.h>
 #include <iostream>
 
 namespace edge_swap {
@@ -26,8 +28,8 @@ typedef CGAL::Mesh_complex_3_in_triangulation_3<Mesh_tr, Domain::Corner_index, D
 typedef CGAL::Mesh_criteria_3<Mesh_tr> Criteria;
 
 // 1 in the flow region, 2 and 3 inside the spheres, 0 outside the box. The
-// spheres are meshed as subdomains of their own so that Mesh_3 refines
-// their inside and cannot miss their surfaces; they become holes (0) after.
+// spheres are subdomains of their own while Mesh_3 runs, so that it meshes
+// both sides of their surfaces; they become holes (0) after.
 struct Flow_region
 {
   Two_spheres g;
@@ -41,15 +43,26 @@ struct Flow_region
   }
 };
 
-// The boundary reference of a facet of the flow region: 1 on the box,
-// 2 and 3 on the first and second sphere.
-int boundary_reference(const Two_spheres& g, const std::array<K::Point_3, 3>& p)
+// The boundary reference of a facet of the flow region, from the two labels
+// it separates: 1 on the box (flow and outside), 2 and 3 on the spheres.
+int boundary_reference(const std::pair<int, int>& patch)
 {
-  const K::Point_3 c = CGAL::centroid(p[0], p[1], p[2]);
-  const double d0 = std::sqrt(CGAL::squared_distance(c, K::Point_3(g.center_x[0], 0, 0)));
-  const double d1 = std::sqrt(CGAL::squared_distance(c, K::Point_3(g.center_x[1], 0, 0)));
-  if(std::min(d0, d1) > 2 * g.radius) return 1;
-  return d0 < d1 ? 2 : 3;
+  return std::max(patch.first, patch.second);
+}
+
+// Points spread evenly over a sphere (a Fibonacci lattice) about `spacing` apart.
+std::vector<K::Point_3> points_on_sphere(const K::Point_3& center, double radius, double spacing)
+{
+  const int n = 8 + int(4 * CGAL_PI * radius * radius / (spacing * spacing));
+  const double golden_angle = CGAL_PI * (3 - std::sqrt(5.0));
+  std::vector<K::Point_3> points;
+  for(int k = 0; k < n; ++k)
+  {
+    const double z = 1 - (2.0 * k + 1) / n, r = std::sqrt(1 - z * z), phi = k * golden_angle;
+    points.emplace_back(center.x() + radius * r * std::cos(phi), center.y() + radius * r * std::sin(phi),
+                        center.z() + radius * z);
+  }
+  return points;
 }
 
 } // namespace
@@ -77,19 +90,6 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
       edges.push_back({corner(a, 0, b), corner(a, 1, b)});
       edges.push_back({corner(a, b, 0), corner(a, b, 1)});
     }
-  // A great circle on each sphere (closed polyline): Mesh_3 finds a surface
-  // only where its refinement meets it, and the spheres are small.
-  for(double cx : g.center_x)
-  {
-    std::vector<K::Point_3> circle;
-    const int n = 256;
-    for(int k = 0; k <= n; ++k)
-    {
-      const double t = 2 * CGAL_PI * (k % n) / n;
-      circle.emplace_back(cx + g.radius * std::cos(t), g.radius * std::sin(t), 0);
-    }
-    edges.push_back(circle);
-  }
   domain.add_features(edges.begin(), edges.end());
 
   namespace params = CGAL::parameters;
@@ -97,7 +97,22 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
                           params::facet_distance = size / 20, params::cell_radius_edge_ratio = 3,
                           params::cell_size = size);
   std::cerr << "mesh-domain: meshing two-spheres with size " << size << " (CGAL Mesh_3)\n";
-  const C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  C3t3 c3t3 = CGAL::make_mesh_3<C3t3>(domain, criteria, params::no_perturb(), params::no_exude());
+  // Mesh_3 (CGAL 5.5) seeds surfaces with initial points only when the
+  // protected features give no surface at all, and finds a surface later only
+  // where a Voronoi edge happens to cross it: the small spheres are missed.
+  // Seeding them with surface points, as for a custom initialization, and
+  // refining again finds them.
+  auto weighted = c3t3.triangulation().geom_traits().construct_weighted_point_3_object();
+  for(int s = 0; s < 2; ++s)
+    for(const auto& p : points_on_sphere(K::Point_3(g.center_x[s], 0, 0), g.radius, size / 2))
+    {
+      const auto v = c3t3.triangulation().insert(weighted(p));
+      if(v == Mesh_tr::Vertex_handle()) continue; // hidden by a protecting ball (never near the spheres)
+      c3t3.set_dimension(v, 2);
+      c3t3.set_index(v, domain.index_from_surface_patch_index(std::make_pair(1, 2 + s)));
+    }
+  CGAL::refine_mesh_3(c3t3, domain, criteria, params::no_perturb(), params::no_exude());
   const Mesh_tr& mtr = c3t3.triangulation();
   std::map<int, int> by_label;
   for(auto c : mtr.finite_cell_handles()) by_label[c3t3.subdomain_index(c)]++;
@@ -122,14 +137,9 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
   {
     const auto& f = *it;
     std::array<std::size_t, 3> t;
-    std::array<K::Point_3, 3> p;
-    for(int k = 0; k < 3; ++k)
-    {
-      t[k] = index[f.first->vertex((f.second + 1 + k) & 3)];
-      p[k] = in.points[t[k]];
-    }
+    for(int k = 0; k < 3; ++k) t[k] = index[f.first->vertex((f.second + 1 + k) & 3)];
     in.triangles.push_back(t);
-    in.triangle_references.push_back(boundary_reference(g, p));
+    in.triangle_references.push_back(boundary_reference(c3t3.surface_patch_index(f)));
   }
   Triangulation tr;
   const std::string problem = build_mesh(tr, in);
