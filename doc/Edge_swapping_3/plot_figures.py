@@ -67,7 +67,12 @@ for ax, name, title in ((axes[0], "ts0.vtu", "Mesh_3 mesh"), (axes[1], "ts2.vtu"
     x = [p[3 * k] for k in idx]; y = [p[3 * k + 1] for k in idx]
     values = [a[field][k] for k in idx]
     t = mtri.Triangulation(x, y)
+    # The spheres (radius 0.5 at x = 0 and 3) are holes of the mesh: leave them blank.
+    t.set_mask([min((sum(x[i] for i in tri) / 3 - cx) ** 2 + (sum(y[i] for i in tri) / 3) ** 2
+                    for cx in (0.0, 3.0)) < 0.25 for tri in t.triangles])
     ax.tripcolor(t, values, shading="gouraud", cmap="viridis")
+    for cx in (0.0, 3.0):
+        ax.add_patch(plt.Circle((cx, 0), 0.5, fill=False, lw=0.6, color="w"))
     ax.triplot(t, lw=0.15, color="k")
     ax.set_aspect("equal"); ax.set_title(f"{title}: {len(p) // 3} vertices (slice |z| < 0.08, {field})")
 fig.tight_layout(); fig.savefig(f"{out}/two_spheres_slice.png", dpi=120)

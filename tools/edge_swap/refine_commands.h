@@ -195,7 +195,7 @@ inline int run_refine(const Refine_options& o)
   write_rounds(files, o.history, total);
   files.commit();
   std::cout << "refine by " << o.by << ": " << total.sites_inserted << " sites inserted, " << total.sites_refused
-            << " refused (outside the domain or on a constrained face); vertices " << tr.number_of_vertices()
+            << " refused (outside the domain, on a constrained face, or encroaching upon one); vertices " << tr.number_of_vertices()
             << ", cells " << tr.number_of_finite_cells();
   if(o.by == "aspect-ratio")
     std::cout << "; worst refinable aspect ratio " << total.rounds.front().worst_refinable << " -> "

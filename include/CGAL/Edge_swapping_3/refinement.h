@@ -14,6 +14,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <cmath>
+#include <algorithm>
 #include <functional>
 #include <queue>
 #include <vector>
@@ -37,7 +38,7 @@ struct Refinement_report
 {
   std::vector<Refinement_round> rounds; ///< rounds[0] is the mesh before refinement
   std::size_t sites_inserted = 0;
-  std::size_t sites_refused = 0;        ///< circumcenters outside the domain or on a constraint
+  std::size_t sites_refused = 0;        ///< circumcenters outside the domain, on a constraint or encroaching upon one
   std::array<std::size_t, number_of_flip_kinds> swaps{};
   bool target_met = false;              ///< aspect ratio only
   double seconds = 0;
@@ -103,9 +104,49 @@ std::array<double, 4> barycentric_weights(const Tr& tr, typename Tr::Cell_handle
   return w;
 }
 
+// Whether the site p, in cell `at`, encroaches upon a constrained facet: lies
+// strictly inside the facet's diametral ball (Shewchuk). The facets looked at
+// bound the cells whose circumsphere holds p, found from `at` without
+// crossing a constraint: the facets the site would see. A Delaunay refiner
+// would split such a facet; here the boundary must stay as it is, so the site
+// is refused instead, which keeps sites away from constraints and the
+// refinement from cascading into ever smaller cells along them.
+template <class Tr, class Constraints>
+bool encroaches_constrained_facet(const Tr& tr, typename Tr::Cell_handle at, const typename Tr::Point& p,
+                                  const Constraints& constraints)
+{
+  if constexpr(std::is_same<Constraints, No_constraints>::value)
+    return false;
+  else
+  {
+    typedef typename Tr::Cell_handle Cell_handle;
+    auto diametral_side = tr.geom_traits().side_of_bounded_sphere_3_object();
+    std::vector<Cell_handle> cavity{at};
+    for(std::size_t k = 0; k < cavity.size(); ++k)
+    {
+      const Cell_handle d = cavity[k];
+      for(int i = 0; i < 4; ++i)
+      {
+        if(constraints.is_facet_constrained(d, i))
+        {
+          if(diametral_side(d->vertex((i + 1) & 3)->point(), d->vertex((i + 2) & 3)->point(),
+                            d->vertex((i + 3) & 3)->point(), p) == ON_BOUNDED_SIDE)
+            return true;
+          continue;
+        }
+        const Cell_handle n = d->neighbor(i);
+        if(tr.is_infinite(n) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
+        if(side_of_sphere(tr, n, p, false) == ON_BOUNDED_SIDE) cavity.push_back(n);
+      }
+    }
+    return false;
+  }
+}
+
 // Where the circumcenter of finite cell c falls (the walk starts at c: the
 // paper notes the site need not lie in it); true when a site may go there
-// (the paper's "refinable" cells: circumcenter in the domain).
+// (the paper's "refinable" cells: circumcenter in the domain, and, in a
+// domain mesh, encroaching upon no constrained facet).
 template <class Tr, class Constraints>
 bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints,
                          typename Tr::Point& p, typename Tr::Cell_handle& at)
@@ -116,7 +157,8 @@ bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constra
   int li, lj;
   at = tr.locate(p, lt, li, lj, c);
   return lt != Tr::VERTEX && lt != Tr::OUTSIDE_CONVEX_HULL && lt != Tr::OUTSIDE_AFFINE_HULL &&
-         split_is_allowed(tr, at, lt, li, lj, constraints);
+         split_is_allowed(tr, at, lt, li, lj, constraints) &&
+         !encroaches_constrained_facet(tr, at, p, constraints);
 }
 
 template <class Tr, class Constraints>
