@@ -125,8 +125,9 @@ enum Link_flip_outcome { LINK_DELAUNAY, LINK_FLIPPED, LINK_NOT_FLIPPABLE_NOW, LI
 // cells carry no data: the 2-3 flip when the apex e across the facet lies
 // strictly inside the wedge of c at that facet, the 3-2 flip when it lies
 // strictly beyond exactly one facet of c through v and the edge opposite has
-// three cells. The same exact tests as is_locally_delaunay and classify_facet
-// decide it. A degenerate or hull case is left to the general planned flip.
+// three cells. Exact tests equivalent to those of is_locally_delaunay and
+// classify_facet decide it. A degenerate or hull case is left to the general
+// planned flip.
 template <class Tr>
 Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int i,
                                          typename Tr::Vertex_handle v, Perturbation perturbation,
@@ -137,8 +138,8 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
   if(tr.is_infinite(c) || tr.is_infinite(n)) return LINK_NEEDS_GENERAL_FLIP;
   const auto apex = n->vertex(n->index(c));
   const auto& e = apex->point();
-  // v in the sphere of n, as CGAL's conflict test asks (the same sign as
-  // the apex in the sphere of c).
+  // v in the sphere of n, as CGAL's conflict test asks: for a shared facet,
+  // the same answer as the apex in the sphere of c, perturbed or not.
   if(side_of_oriented_sphere(tr.geom_traits(), n->vertex(0)->point(), n->vertex(1)->point(),
                              n->vertex(2)->point(), n->vertex(3)->point(), v->point(),
                              perturbation == CGAL_PERTURBATION) != ON_POSITIVE_SIDE)
