@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/edge_swapping_3.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <CGAL/Edge_swapping_3/point_families.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -69,85 +70,17 @@ CGAL::Exact_rational exact_volume(const T& tr)
   return total;
 }
 
-// --- Input families. Every random one is drawn from `seed`, which the tests print.
+// --- Input families (the library's, point_families.h). Every random one is
+// drawn from `seed`, which the tests print.
 
-inline std::vector<Point> random_in_cube(std::size_t n, unsigned seed)
-{
-  CGAL::Random r(seed);
-  std::vector<Point> p;
-  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), r.get_double());
-  return p;
-}
-
-inline std::vector<Point> random_in_ball(std::size_t n, unsigned seed)
-{
-  CGAL::Random r(seed);
-  std::vector<Point> p;
-  while(p.size() < n)
-  {
-    const double x = r.get_double(-1, 1), y = r.get_double(-1, 1), z = r.get_double(-1, 1);
-    if(x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
-  }
-  return p;
-}
-
-inline std::vector<Point> grid(int nx, int ny, int nz)
-{
-  std::vector<Point> p;
-  for(int i = 0; i < nx; ++i)
-    for(int j = 0; j < ny; ++j)
-      for(int k = 0; k < nz; ++k) p.emplace_back(i, j, k);
-  return p;
-}
-
-/// Integer points exactly on the sphere x^2 + y^2 + z^2 = r2: all cospherical.
-inline std::vector<Point> cospherical(int r2)
-{
-  std::vector<Point> p;
-  const int r = int(std::sqrt(double(r2))) + 1;
-  for(int x = -r; x <= r; ++x)
-    for(int y = -r; y <= r; ++y)
-      for(int z = -r; z <= r; ++z)
-        if(x * x + y * y + z * z == r2) p.emplace_back(x, y, z);
-  return p;
-}
-
-/// Random integer points on a few parallel planes: many coplanar and cocircular subsets.
-inline std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed)
-{
-  CGAL::Random r(seed);
-  std::vector<Point> p;
-  while(p.size() < n)
-  {
-    Point q(r.get_int(0, 20), r.get_int(0, 20), r.get_int(0, planes));
-    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
-  }
-  return p;
-}
-
-/// Tight clusters around a few centres.
-inline std::vector<Point> clustered(std::size_t n, unsigned seed)
-{
-  CGAL::Random r(seed);
-  std::vector<Point> centres;
-  for(int k = 0; k < 5; ++k) centres.emplace_back(r.get_double(), r.get_double(), r.get_double());
-  std::vector<Point> p;
-  for(std::size_t k = 0; k < n; ++k)
-  {
-    const Point& c = centres[k % centres.size()];
-    p.emplace_back(c.x() + 1e-3 * r.get_double(), c.y() + 1e-3 * r.get_double(), c.z() + 1e-3 * r.get_double());
-  }
-  return p;
-}
-
-/// Nearly flat: a unit square, 1e-6 thick.
-inline std::vector<Point> nearly_flat(std::size_t n, unsigned seed)
-{
-  CGAL::Random r(seed);
-  std::vector<Point> p;
-  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), 1e-6 * r.get_double());
-  return p;
-}
+namespace pf = CGAL::Edge_swapping_3::point_families;
+inline std::vector<Point> random_in_cube(std::size_t n, unsigned seed) { return pf::random_in_cube<Point>(n, seed); }
+inline std::vector<Point> random_in_ball(std::size_t n, unsigned seed) { return pf::random_in_ball<Point>(n, seed); }
+inline std::vector<Point> grid(int nx, int ny, int nz) { return pf::grid<Point>(nx, ny, nz); }
+inline std::vector<Point> cospherical(int r2) { return pf::cospherical<Point>(r2); }
+inline std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed) { return pf::on_planes<Point>(n, planes, seed); }
+inline std::vector<Point> clustered(std::size_t n, unsigned seed) { return pf::clustered<Point>(n, seed); }
+inline std::vector<Point> nearly_flat(std::size_t n, unsigned seed) { return pf::nearly_flat<Point>(n, seed); }
 
 struct Family
 {

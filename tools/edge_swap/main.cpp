@@ -3,6 +3,7 @@
 
 #include "check_command.h"
 #include "demo_command.h"
+#include "experiment_command.h"
 #include "mesh_domain_command.h"
 #include "optimize_command.h"
 #include "refine_commands.h"
@@ -65,6 +66,31 @@ int main(int argc, char** argv)
   mesh_domain->add_option("-o,--output", domain_output, "output .mesh, .vtu or .ele")->required();
   mesh_domain->add_option("--size", domain_size, "target edge and cell size (default 0.35: about 5,000 vertices)");
 
+  Experiment_options exp;
+  auto* experiment = app.add_subcommand("experiment", "the conjecture laboratory: many instances, one JSON line each, a summary");
+  experiment->add_option("-o,--output", exp.output, "JSON lines, appended to: a stopped run resumes")->required();
+  experiment->add_option("--families", exp.families, "point families, comma separated: random-cube, random-ball, sphere, "
+                         "grid, cospherical, planes, clusters, jittered-grid, nearly-flat, random-integer, cube-corners, "
+                         "cube-centre, octahedron, octahedron-centre")->delimiter(',');
+  experiment->add_option("--points-file", exp.point_files, "TetGen .node point sets of your own (more families)")->delimiter(',');
+  experiment->add_option("--sizes", exp.sizes, "numbers of points, comma separated")->delimiter(',');
+  experiment->add_option("--seeds", exp.seeds, "seeds: N or A-B (each one a point set and a face-order stream)");
+  experiment->add_option("--starts", exp.starts, "placing (random order), scramble:K (Delaunay and K random flips), topcom (every fine triangulation)")->delimiter(',');
+  experiment->add_option("--strategies", exp.strategies, "plain, helper, insertion")->delimiter(',');
+  experiment->add_option("--orders", exp.orders, "face orders: storage, random")->delimiter(',');
+  experiment->add_option("--max-cycles", exp.max_cycles, "cycle limit of each run")->check(CLI::PositiveNumber);
+  experiment->add_option("--threads", exp.threads, "threads (default: all cores)");
+  experiment->add_option("--shard", exp.shard, "I/N: run only the instances numbered I modulo N");
+  experiment->add_option("--cases", exp.cases_dir, "folder for the failing cases and the small stuck ones (to shrink)");
+  experiment->add_option("--stuck-case-max-points", exp.stuck_case_max_points, "save stuck plain runs up to this size");
+  experiment->add_option("--topcom-limit", exp.topcom_limit, "at most this many TOPCOM triangulations per point set");
+
+  Shrink_options shr;
+  auto* shrink = app.add_subcommand("shrink", "remove points from a saved case while it still fails");
+  shrink->add_option("CASE", shr.input, "a case file written by experiment --cases")->required();
+  shrink->add_option("-o,--output", shr.output, "the smaller case (JSON)")->required();
+  shrink->add_option("--expect", shr.expect, "stuck (plain) or failure (not CGAL's Delaunay triangulation)");
+
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
   auto* demo = app.add_subcommand("demo", "helper strategy to CGAL's Delaunay, then the paper's minimum-edge table");
@@ -97,6 +123,8 @@ int main(int argc, char** argv)
     if(*refine) return run_refine(ref);
     if(*stats) return run_stats(stats_path, stats_json);
     if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
+    if(*experiment) return run_experiment(exp);
+    if(*shrink) return run_shrink(shr);
     return run_demo(demo_points, demo_seed);
   }
   catch(const std::exception& e)

@@ -8,9 +8,37 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <algorithm>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
+
+namespace internal {
+
+// The insertion sequence `seq` with the first four affinely independent points
+// (in its order) moved to the front: one tetrahedron is its own Delaunay
+// triangulation. Left as it is if there are none.
+template <class Point, class Gt>
+std::vector<std::size_t> basis_first(const std::vector<Point>& points, const Gt& gt, std::vector<std::size_t> seq)
+{
+  std::size_t basis[4], found = 0;
+  for(std::size_t k = 0; k < seq.size() && found < 4; ++k)
+  {
+    const auto& q = points[seq[k]];
+    bool independent = true;
+    if(found >= 1) independent = (q != points[seq[basis[0]]]);
+    if(found >= 2 && independent) independent = !gt.collinear_3_object()(points[seq[basis[0]]], points[seq[basis[1]]], q);
+    if(found == 3 && independent)
+      independent = gt.orientation_3_object()(points[seq[basis[0]]], points[seq[basis[1]]],
+                                              points[seq[basis[2]]], q) != COPLANAR;
+    if(independent) basis[found++] = k;
+  }
+  for(std::size_t m = 0; m < found; ++m)
+    std::rotate(seq.begin() + m, seq.begin() + basis[m], seq.begin() + basis[m] + 1);
+  return seq;
+}
+
+} // namespace internal
 
 /// What `delaunay_by_insertion` did, over all points.
 struct Insertion_totals
@@ -38,25 +66,8 @@ delaunay_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
   CGAL_precondition(tr.number_of_vertices() == 0);
   CGAL::Real_timer timer;
   timer.start();
-  std::vector<std::size_t> seq = internal::insertion_sequence<typename Tr::Geom_traits>(points, order);
-
-  // Move the first four affinely independent points to the front: one
-  // tetrahedron is its own Delaunay triangulation.
-  const auto& gt = tr.geom_traits();
-  std::size_t basis[4], found = 0;
-  for(std::size_t k = 0; k < seq.size() && found < 4; ++k)
-  {
-    const auto& q = points[seq[k]];
-    bool independent = true;
-    if(found >= 1) independent = (q != points[seq[basis[0]]]);
-    if(found >= 2 && independent) independent = !gt.collinear_3_object()(points[seq[basis[0]]], points[seq[basis[1]]], q);
-    if(found == 3 && independent)
-      independent = gt.orientation_3_object()(points[seq[basis[0]]], points[seq[basis[1]]],
-                                              points[seq[basis[2]]], q) != COPLANAR;
-    if(independent) basis[found++] = k;
-  }
-  for(std::size_t m = 0; m < found; ++m)
-    std::rotate(seq.begin() + m, seq.begin() + basis[m], seq.begin() + basis[m] + 1);
+  const std::vector<std::size_t> seq = internal::basis_first(
+      points, tr.geom_traits(), internal::insertion_sequence<typename Tr::Geom_traits>(points, order));
 
   std::vector<Vertex_handle> vertices(points.size());
   Insertion_totals local;

@@ -1,0 +1,218 @@
+// Point sets for experiments and tests: random ones drawn from a seed, and
+// degenerate ones (grids, exactly cospherical and coplanar sets, clusters,
+// jittered grids), the inputs on which the paper's conjectures are tested.
+
+#ifndef CGAL_EDGE_SWAPPING_3_POINT_FAMILIES_H
+#define CGAL_EDGE_SWAPPING_3_POINT_FAMILIES_H
+
+#include <CGAL/Random.h>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+namespace point_families {
+
+template <class Point>
+std::vector<Point> random_in_cube(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), r.get_double());
+  return p;
+}
+
+template <class Point>
+std::vector<Point> random_in_ball(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  while(p.size() < n)
+  {
+    const double x = r.get_double(-1, 1), y = r.get_double(-1, 1), z = r.get_double(-1, 1);
+    if(x * x + y * y + z * z <= 1) p.emplace_back(x, y, z);
+  }
+  return p;
+}
+
+/// Random points on the unit sphere (rounded: nearly, not exactly, cospherical).
+template <class Point>
+std::vector<Point> on_sphere(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  while(p.size() < n)
+  {
+    const double x = r.get_double(-1, 1), y = r.get_double(-1, 1), z = r.get_double(-1, 1);
+    const double l = std::sqrt(x * x + y * y + z * z);
+    if(l > 0.1 && l <= 1) p.emplace_back(x / l, y / l, z / l);
+  }
+  return p;
+}
+
+template <class Point>
+std::vector<Point> grid(int nx, int ny, int nz)
+{
+  std::vector<Point> p;
+  for(int i = 0; i < nx; ++i)
+    for(int j = 0; j < ny; ++j)
+      for(int k = 0; k < nz; ++k) p.emplace_back(i, j, k);
+  return p;
+}
+
+/// A k x k x k grid moved by at most `amount` (relative) per coordinate.
+template <class Point>
+std::vector<Point> jittered_grid(int k, double amount, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  for(const Point& q : grid<Point>(k, k, k))
+    p.emplace_back(q.x() + amount * r.get_double(-1, 1), q.y() + amount * r.get_double(-1, 1),
+                   q.z() + amount * r.get_double(-1, 1));
+  return p;
+}
+
+/// Integer points exactly on the sphere x^2 + y^2 + z^2 = r2: all cospherical.
+template <class Point>
+std::vector<Point> cospherical(int r2)
+{
+  std::vector<Point> p;
+  const int r = int(std::sqrt(double(r2))) + 1;
+  for(int x = -r; x <= r; ++x)
+    for(int y = -r; y <= r; ++y)
+      for(int z = -r; z <= r; ++z)
+        if(x * x + y * y + z * z == r2) p.emplace_back(x, y, z);
+  return p;
+}
+
+/// `n` of the integer points of the smallest sphere about the origin that has
+/// at least `n` (and is not flat), drawn from `seed`: exactly cospherical.
+template <class Point>
+std::vector<Point> cospherical_subset(std::size_t n, unsigned seed)
+{
+  std::vector<Point> p;
+  for(int r2 = 3; p.size() < std::max<std::size_t>(n, 8); ++r2) p = cospherical<Point>(r2);
+  CGAL::Random r(seed);
+  for(std::size_t k = 0; k < n; ++k) std::swap(p[k], p[k + std::size_t(r.get_int(0, int(p.size() - k)))]);
+  p.resize(n);
+  return p;
+}
+
+/// Random integer points on a few parallel planes: many coplanar and cocircular subsets.
+template <class Point>
+std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  const int side = std::max(20, 2 + int(std::sqrt(double(n))));
+  while(p.size() < n)
+  {
+    Point q(r.get_int(0, side), r.get_int(0, side), r.get_int(0, planes));
+    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
+  }
+  return p;
+}
+
+/// Tight clusters around five centres.
+template <class Point>
+std::vector<Point> clustered(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> centres;
+  for(int k = 0; k < 5; ++k) centres.emplace_back(r.get_double(), r.get_double(), r.get_double());
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const Point& c = centres[k % centres.size()];
+    p.emplace_back(c.x() + 1e-3 * r.get_double(), c.y() + 1e-3 * r.get_double(), c.z() + 1e-3 * r.get_double());
+  }
+  return p;
+}
+
+/// Nearly flat: a unit square, 1e-6 thick.
+template <class Point>
+std::vector<Point> nearly_flat(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  for(std::size_t k = 0; k < n; ++k) p.emplace_back(r.get_double(), r.get_double(), 1e-6 * r.get_double());
+  return p;
+}
+
+/// Distinct random integer points in [0, 1000]^3 (general position with high
+/// probability; integer, so TOPCOM can read them).
+template <class Point>
+std::vector<Point> random_integer(std::size_t n, unsigned seed)
+{
+  CGAL::Random r(seed);
+  std::vector<Point> p;
+  while(p.size() < n)
+  {
+    Point q(r.get_int(0, 1001), r.get_int(0, 1001), r.get_int(0, 1001));
+    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
+  }
+  return p;
+}
+
+/// The corners of the cube [0,2]^3, with its centre (1,1,1) if asked.
+template <class Point>
+std::vector<Point> cube_corners(bool with_centre)
+{
+  std::vector<Point> p;
+  for(const Point& q : grid<Point>(2, 2, 2)) p.emplace_back(2 * q.x(), 2 * q.y(), 2 * q.z());
+  if(with_centre) p.emplace_back(1, 1, 1);
+  return p;
+}
+
+/// The octahedron (+-1,0,0), (0,+-1,0), (0,0,+-1), with its centre if asked.
+template <class Point>
+std::vector<Point> octahedron(bool with_centre)
+{
+  std::vector<Point> p = {Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0),
+                          Point(0, -1, 0), Point(0, 0, 1), Point(0, 0, -1)};
+  if(with_centre) p.emplace_back(0, 0, 0);
+  return p;
+}
+
+} // namespace point_families
+
+/// The names `make_point_family` knows, for experiments.
+inline std::vector<std::string> point_family_names()
+{
+  return {"random-cube", "random-ball", "sphere",   "grid",     "cospherical", "planes",   "clusters",
+          "jittered-grid", "nearly-flat", "random-integer", "cube-corners", "cube-centre", "octahedron",
+          "octahedron-centre"};
+}
+
+/// The family `name` with about `n` points (grids: the nearest k x k x k;
+/// cube and octahedron: their own size), drawn from `seed`. Throws for an
+/// unknown name.
+template <class Point>
+std::vector<Point> make_point_family(const std::string& name, std::size_t n, unsigned seed)
+{
+  namespace pf = point_families;
+  const int k = std::max(2, int(std::lround(std::cbrt(double(n)))));
+  if(name == "random-cube") return pf::random_in_cube<Point>(n, seed);
+  if(name == "random-ball") return pf::random_in_ball<Point>(n, seed);
+  if(name == "sphere") return pf::on_sphere<Point>(n, seed);
+  if(name == "grid") return pf::grid<Point>(k, k, k);
+  if(name == "cospherical") return pf::cospherical_subset<Point>(n, seed);
+  if(name == "planes") return pf::on_planes<Point>(n, 3, seed);
+  if(name == "clusters") return pf::clustered<Point>(n, seed);
+  if(name == "jittered-grid") return pf::jittered_grid<Point>(k, 1e-9, seed);
+  if(name == "nearly-flat") return pf::nearly_flat<Point>(n, seed);
+  if(name == "random-integer") return pf::random_integer<Point>(n, seed);
+  if(name == "cube-corners") return pf::cube_corners<Point>(false);
+  if(name == "cube-centre") return pf::cube_corners<Point>(true);
+  if(name == "octahedron") return pf::octahedron<Point>(false);
+  if(name == "octahedron-centre") return pf::octahedron<Point>(true);
+  throw std::invalid_argument("unknown point family '" + name + "'");
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_POINT_FAMILIES_H
