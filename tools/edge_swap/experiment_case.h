@@ -51,7 +51,19 @@ struct Experiment_outcome
 /// swaps, did not end on CGAL's Delaunay triangulation.
 inline bool is_failure(const Experiment_case& c, const Experiment_outcome& o)
 {
-  return c.strategy != "plain" && !o.equal_to_cgal;
+  return c.strategy != "plain" && o.ending.rfind("bad start", 0) != 0 && !o.equal_to_cgal;
+}
+
+/// The cells with their vertices ordered so that each is positively oriented
+/// (TOPCOM gives unordered sets); a flat one is left as it is.
+inline std::vector<std::array<std::size_t, 4>> oriented_cells(const std::vector<Point>& points,
+                                                              std::vector<std::array<std::size_t, 4>> cells)
+{
+  for(auto& t : cells)
+    if(t[0] < points.size() && t[1] < points.size() && t[2] < points.size() && t[3] < points.size() &&
+       CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+      std::swap(t[0], t[1]);
+  return cells;
 }
 
 inline std::size_t scramble_flips(const std::string& start)

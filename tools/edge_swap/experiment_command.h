@@ -361,8 +361,8 @@ inline int run_experiment(const Experiment_options& opt)
         if(in.start.rfind("topcom:", 0) == 0)
         {
           c.start = "cells";
-          c.cells = topcom_cells.at(in.family + "|" + std::to_string(in.size) + "|" + std::to_string(in.seed))
-                        [std::stoul(in.start.substr(7))];
+          c.cells = oriented_cells(c.points, topcom_cells.at(in.family + "|" + std::to_string(in.size) + "|" +
+                                                            std::to_string(in.seed))[std::stoul(in.start.substr(7))]);
         }
         else
         {

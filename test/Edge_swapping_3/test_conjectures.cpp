@@ -1,0 +1,265 @@
+// The conjecture laboratory: the kept cases (Joe's stuck plain swapping, the
+// helper strategy cycling in storage order), TOPCOM's formats and an
+// exhaustive small case through `edge_swap experiment`, resuming, shards,
+// shrinking, and bad options.
+
+#include "test_common.h"
+#include "program_runner.h"
+#include "experiment_case.h"
+#include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace test;
+namespace xp = edge_swap;
+
+namespace {
+
+xp::Experiment_case load_case(const std::string& name)
+{
+  std::ifstream in(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
+  REQUIRE(in);
+  return xp::case_from_json(nlohmann::json::parse(in));
+}
+
+// The start triangulation of a case (placing or explicit cells).
+void build_start(xp::Plain_triangulation& tr, const xp::Experiment_case& c)
+{
+  if(c.start == "placing")
+    ES::insert_by_placing(tr, c.points, ES::INPUT_ORDER);
+  else
+  {
+    std::vector<xp::Plain_triangulation::Vertex_handle> vertices;
+    REQUIRE(ES::build_triangulation_from_cells(tr, c.points, c.cells, vertices).empty());
+  }
+}
+
+std::vector<nlohmann::json> json_lines(const std::string& path)
+{
+  std::vector<nlohmann::json> lines;
+  std::ifstream in(path);
+  std::string line;
+  while(std::getline(in, line)) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+std::set<std::string> keys(const std::vector<nlohmann::json>& lines)
+{
+  std::set<std::string> k;
+  for(const auto& j : lines) k.insert(j["key"].get<std::string>());
+  return k;
+}
+
+} // namespace
+
+TEST_CASE("Joe's phenomenon: 9 points where plain swapping is stuck and the helper strategy gets out", "[conjectures]")
+{
+  // Found by `edge_swap experiment` (160,000 placing runs of 6 to 9 random
+  // integer points: this was the only stuck one) and shrunk by `edge_swap shrink`.
+  const auto c = load_case("plain_stuck_9_points.json");
+  REQUIRE(c.points.size() == 9);
+  REQUIRE(c.strategy == "plain");
+
+  xp::Plain_triangulation tr;
+  build_start(tr, c);
+  ES::Swap_options options;
+  options.face_order = ES::RANDOM_ORDER;
+  options.random_seed = c.seed;
+  const auto plain = CGAL::swap_edges(tr, ES::Delaunay_criterion(), options);
+  REQUIRE(plain.ending == ES::STUCK);
+  REQUIRE(plain.non_delaunay_facets > 0);
+  REQUIRE(tr.is_valid(true));
+  // Stuck for good: no facet that fails the in-sphere test has a flip.
+  for(auto f : tr.finite_facets())
+    if(!ES::is_locally_delaunay(tr, f.first, f.second))
+      REQUIRE(!ES::classify_facet(tr, f.first, f.second).is_swappable());
+
+  // The helper strategy from the same start, and from the stuck end, reaches CGAL's.
+  xp::Plain_triangulation again;
+  build_start(again, c);
+  REQUIRE(CGAL::swap_edges_with_helper(again, options).ending == ES::CONVERGED);
+  REQUIRE(ES::compare_with_delaunay(again).identical);
+  REQUIRE(CGAL::swap_edges_with_helper(tr, options).ending == ES::CONVERGED);
+  REQUIRE(ES::compare_with_delaunay(tr).identical);
+}
+
+TEST_CASE("The helper strategy cycles in storage order from a TOPCOM start of 9 points", "[conjectures]")
+{
+  // One of the 758 fine triangulations of 9 random integer points (TOPCOM):
+  // from it, and from no other, the helper strategy in storage order never ends.
+  for(const std::string name : {"helper_storage_cycle_9_points_topcom_start.json", "helper_storage_cycle_20_points.json"})
+  {
+    INFO(name);
+    const auto c = load_case(name);
+    xp::Plain_triangulation tr;
+    build_start(tr, c);
+    ES::Swap_options options;
+    options.face_order = ES::STORAGE_ORDER;
+    options.max_cycles = 300;
+    // Not a bug: the triangulation is valid after every cycle, and the swaps
+    // per cycle repeat with a short period.
+    std::vector<std::size_t> swaps;
+    bool always_valid = true;
+    options.cycle_visitor = [&](const ES::Cycle_record& r) {
+      swaps.push_back(r.total_swaps());
+      always_valid = always_valid && tr.is_valid();
+    };
+    const auto report = CGAL::swap_edges_with_helper(tr, options);
+    REQUIRE(report.ending == ES::CYCLE_LIMIT_REACHED);
+    REQUIRE(always_valid);
+    REQUIRE(report.non_delaunay_facets > 0);
+    std::size_t period = 0;
+    for(std::size_t p = 1; p <= 10 && period == 0; ++p)
+    {
+      bool periodic = true;
+      for(std::size_t k = swaps.size() - 100; k < swaps.size(); ++k) periodic = periodic && swaps[k] == swaps[k - p];
+      if(periodic) period = p;
+    }
+    INFO("last swaps per cycle " << swaps[swaps.size() - 2] << ", " << swaps.back());
+    REQUIRE(period > 0);
+    REQUIRE(swaps.back() > 0);
+
+    // In random face order the same start reaches CGAL's triangulation.
+    xp::Plain_triangulation again;
+    build_start(again, c);
+    options.face_order = ES::RANDOM_ORDER;
+    options.cycle_visitor = nullptr;
+    REQUIRE(CGAL::swap_edges_with_helper(again, options).ending == ES::CONVERGED);
+    REQUIRE(ES::compare_with_delaunay(again).identical);
+  }
+}
+
+TEST_CASE("TOPCOM's formats: integer points out and triangulations in and malformed lines rejected", "[conjectures][files]")
+{
+  std::ostringstream os;
+  ES::IO::write_topcom_points(os, std::vector<Point>{Point(0, 0, 0), Point(1, -2, 3)});
+  REQUIRE(os.str() == "[[0,0,0,1],[1,-2,3,1]]\n");
+  REQUIRE_THROWS_WITH(ES::IO::write_topcom_points(os, std::vector<Point>{Point(0.5, 0, 0)}),
+                      Catch::Contains("integer coordinates"));
+
+  std::istringstream in("Evaluating Commandline Options ...\nT[0,0,0] := {{0,1,2,3},{1,2,3,4}};\nT[1] := {{0,1,2,4}};\n");
+  const auto t = ES::IO::read_topcom_triangulations(in);
+  REQUIRE(t.size() == 2);
+  REQUIRE(t[0].size() == 2);
+  REQUIRE(t[0][1] == std::array<std::size_t, 4>{1, 2, 3, 4});
+  for(const std::string bad : {"T[0] := {{0,1,2}};", "T[0] := {{0,1,2,3,4}};", "T[0] := {{0,1,x,3}};", "T[0] := {{0,1,2,3}"})
+  {
+    INFO(bad);
+    std::istringstream b(bad + "\n");
+    REQUIRE_THROWS_WITH(ES::IO::read_topcom_triangulations(b), Catch::Contains("TOPCOM output line 1"));
+  }
+}
+
+TEST_CASE("Experiment: every triangulation of the cube from TOPCOM and both strategies in both orders", "[conjectures][program]")
+{
+  Workdir w;
+  const Run r = w.run("experiment --families cube-corners,octahedron-centre --seeds 1 --starts topcom "
+                      "--strategies plain,helper --orders storage,random -o " + w.path("cube.jsonl"));
+  INFO("stderr: " << r.err << "\nstdout: " << r.out);
+  REQUIRE(r.exit_code == 0);
+  // The 3-cube has 74 triangulations, all fine (its corners are its vertices).
+  REQUIRE(r.err.find("TOPCOM: 74 fine triangulations of cube-corners") != std::string::npos);
+  REQUIRE(r.out.find("cube-corners n=8 seed 1: 74 triangulations; plain stuck in 0 of 148 runs; helper failed in 0 of 148 runs") !=
+          std::string::npos);
+  const auto lines = json_lines(w.path("cube.jsonl"));
+  std::size_t cube = 0;
+  for(const auto& j : lines)
+  {
+    REQUIRE(j["valid"].get<bool>());
+    REQUIRE(j["equal_to_cgal"].get<bool>() == (j["ending"] == "converged"));
+    cube += j["family"] == "cube-corners";
+  }
+  REQUIRE(cube == 74 * 4);
+}
+
+TEST_CASE("Experiment: a stopped run resumes and shards split the instances", "[conjectures][program]")
+{
+  Workdir w;
+  const std::string common = "experiment --families random-cube,grid --sizes 12,30 --strategies plain,helper,insertion "
+                             "--orders storage,random --threads 2 ";
+  REQUIRE(w.run(common + "--seeds 1-3 -o " + w.path("all.jsonl")).exit_code == 0);
+  const auto all = json_lines(w.path("all.jsonl"));
+  REQUIRE(all.size() == 2 * 2 * 3 * (2 * 2 + 2));
+  for(const auto& j : all)
+  {
+    INFO(j.dump());
+    REQUIRE(j["valid"].get<bool>());
+    if(j["strategy"] != "plain") REQUIRE(!j["failure"].get<bool>());
+  }
+
+  // Cut the file in the middle of a line, as a stop would: the run goes on
+  // from there, and adds the new seeds, without doing anything twice.
+  const std::string text = Workdir::slurp(w.path("all.jsonl"));
+  w.write("resumed.jsonl", text.substr(0, text.size() / 2));
+  const Run r = w.run(common + "--seeds 1-4 -o " + w.path("resumed.jsonl"));
+  REQUIRE(r.exit_code == 0);
+  const auto resumed = json_lines(w.path("resumed.jsonl"));
+  REQUIRE(resumed.size() == all.size() * 4 / 3);
+  REQUIRE(keys(resumed).size() == resumed.size());
+  REQUIRE(r.err.find("already in") != std::string::npos);
+
+  // Three shards together are the whole experiment, each instance once.
+  std::set<std::string> union_of_shards;
+  std::size_t total = 0;
+  for(int s = 0; s < 3; ++s)
+  {
+    const std::string out = w.path("shard" + std::to_string(s) + ".jsonl");
+    REQUIRE(w.run(common + "--seeds 1-3 --shard " + std::to_string(s) + "/3 -o " + out).exit_code == 0);
+    const auto part = keys(json_lines(out));
+    total += part.size();
+    union_of_shards.insert(part.begin(), part.end());
+  }
+  REQUIRE(total == all.size());
+  REQUIRE(union_of_shards == keys(all));
+}
+
+TEST_CASE("Shrink keeps a stuck case stuck with fewer points and says the helper gets out", "[conjectures][program]")
+{
+  Workdir w;
+  // The 9-point case with 3 more points: shrinking finds a stuck subset again.
+  auto c = load_case("plain_stuck_9_points.json");
+  c.points.emplace_back(100, 100, 100);
+  c.points.emplace_back(900, 120, 870);
+  c.points.emplace_back(50, 960, 420);
+  if(xp::run_case(c).ending != "stuck") c.points.resize(9); // the extra points may unstick it: then plain 9
+  std::ofstream(w.path("case.json")) << xp::case_json(c).dump();
+  const Run r = w.run("shrink " + w.path("case.json") + " -o " + w.path("small.json"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(w.path("small.json"));
+  const auto j = nlohmann::json::parse(in);
+  REQUIRE(j["points"].size() <= c.points.size());
+  REQUIRE(j["outcome"]["ending"] == "stuck");
+  REQUIRE(j["helper_from_the_same_start"]["equal_to_cgal"].get<bool>());
+}
+
+TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjectures][program]")
+{
+  Workdir w;
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"experiment --families no-such -o " + w.path("o.jsonl"), "unknown point family"},
+      {"experiment --seeds 5-2 -o " + w.path("o.jsonl"), "--seeds"},
+      {"experiment --shard 3/3 -o " + w.path("o.jsonl"), "--shard"},
+      {"experiment --strategies nothing -o " + w.path("o.jsonl"), "unknown strategy"},
+      {"experiment --starts topcom --families random-cube --sizes 8 -o " + w.path("o.jsonl"), "integer coordinates"},
+      {"shrink " + w.path("missing.json") + " -o " + w.path("s.json"), "cannot read"},
+      {"shrink " + w.path("bad.json") + " -o " + w.path("s.json"), "not JSON"},
+      {"shrink " + w.path("null.json") + " -o " + w.path("s.json"), "bad case file"},
+      {"shrink " + w.path("few.json") + " -o " + w.path("s.json"), "fewer than four points"}};
+  w.write("bad.json", "{\"points\": [");
+  w.write("null.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0],[0,0,null]], \"start\": \"placing\", \"strategy\": \"plain\", "
+                      "\"order\": \"random\", \"seed\": 1}");
+  w.write("few.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0]], \"start\": \"placing\", \"strategy\": \"plain\", "
+                      "\"order\": \"random\", \"seed\": 1}");
+  for(const auto& [args, what] : bad)
+  {
+    const Run r = w.run(args);
+    INFO(args << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find(what) != std::string::npos);
+    REQUIRE(!fs::exists(w.path("o.jsonl")));
+    REQUIRE(!fs::exists(w.path("s.json")));
+  }
+}
