@@ -414,6 +414,19 @@ inline int run_experiment(const Experiment_options& opt)
   return 0;
 }
 
+/// Runs a saved case again and prints its outcome (JSON).
+inline int run_replay(const std::string& path, std::size_t max_cycles)
+{
+  std::ifstream in(path);
+  if(!in) throw Usage_error("cannot read '" + path + "'");
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  if(j.is_discarded()) throw Usage_error("'" + path + "' is not JSON");
+  Experiment_case c = case_from_json(j);
+  if(max_cycles) c.max_cycles = max_cycles;
+  std::cout << outcome_json(run_case(c)).dump() << '\n';
+  return 0;
+}
+
 struct Shrink_options
 {
   std::string input, output, expect;

@@ -91,6 +91,12 @@ int main(int argc, char** argv)
   shrink->add_option("-o,--output", shr.output, "the smaller case (JSON)")->required();
   shrink->add_option("--expect", shr.expect, "stuck (plain) or failure (not CGAL's Delaunay triangulation)");
 
+  std::string replay_path;
+  std::size_t replay_cycles = 0;
+  auto* replay = app.add_subcommand("replay", "run a saved case again and print its outcome");
+  replay->add_option("CASE", replay_path, "a case file written by experiment --cases or shrink")->required();
+  replay->add_option("--max-cycles", replay_cycles, "another cycle limit");
+
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
   auto* demo = app.add_subcommand("demo", "helper strategy to CGAL's Delaunay, then the paper's minimum-edge table");
@@ -125,6 +131,7 @@ int main(int argc, char** argv)
     if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
     if(*experiment) return run_experiment(exp);
     if(*shrink) return run_shrink(shr);
+    if(*replay) return run_replay(replay_path, replay_cycles);
     return run_demo(demo_points, demo_seed);
   }
   catch(const std::exception& e)

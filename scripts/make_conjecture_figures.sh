@@ -1,0 +1,25 @@
+#!/bin/bash
+# Runs edge_swap for the conjecture laboratory's figures and draws them with
+# matplotlib (Debian's python3-matplotlib, hence /usr/bin/python3) into
+# doc/Edge_swapping_3/figures/. Needs a Release build in build/. About 10 minutes here.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+E=build/bin/edge_swap
+D=$(mktemp -d)
+trap 'rm -rf "$D"' EXIT
+for n in 500 1000 8000 10000; do
+  python3 - "$D/cube_$n.node" "$n" <<'PY'
+import random, sys
+random.seed(1)
+n = int(sys.argv[2])
+with open(sys.argv[1], "w") as f:
+    f.write(f"{n} 3 0 0\n")
+    for i in range(n):
+        f.write(f"{i + 1} {random.random()!r} {random.random()!r} {random.random()!r}\n")
+PY
+  $E optimize "$D/cube_$n.node" --start placing --criterion delaunay -o "$D/plain_$n.ele" --history "$D/plain_$n.csv" --seed 1
+  $E optimize "$D/cube_$n.node" --start placing --helper -o "$D/helper_$n.ele" --history "$D/helper_$n.csv" --seed 1
+done
+$E experiment --families random-cube --sizes 10,20,50,100,200,500,1000 --seeds 1-100 --starts placing \
+  --strategies plain --orders random -o "$D/stuck_rate.jsonl" > /dev/null
+/usr/bin/python3 doc/Edge_swapping_3/plot_conjectures.py "$D" doc/Edge_swapping_3/figures
