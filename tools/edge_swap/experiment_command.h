@@ -286,8 +286,11 @@ inline int run_experiment(const Experiment_options& opt)
     if(o != "storage" && o != "random") throw Usage_error("unknown face order '" + o + "'");
   for(const auto& s : opt.starts)
     if(s != "placing" && s != "topcom" && s.rfind("scramble:", 0) != 0) throw Usage_error("unknown start '" + s + "'");
-  std::vector<std::string> families = opt.families;
+  std::vector<std::string> families; // --families "" leaves only the point files
+  for(const auto& f : opt.families)
+    if(!f.empty()) families.push_back(f);
   for(const auto& f : opt.point_files) families.push_back("file:" + f);
+  if(families.empty()) throw Usage_error("no point family and no --points-file");
   for(const auto& f : families)
     if(f.rfind("file:", 0) != 0) family_points(f, 4, 1); // an unknown name fails here, before anything runs
 
