@@ -132,6 +132,38 @@ TEST_CASE("The helper strategy cycles in storage order from a TOPCOM start of 8 
   }
 }
 
+TEST_CASE("In random order too the helper strategy can stall: 199 exactly cospherical points", "[conjectures]")
+{
+  // Found by the family experiment (cospherical, 200 points, seed 371). Shrink
+  // could remove one point only: removing more changes the whole random
+  // order. With seed 371 it had not ended after 200,000 cycles; with seed 1,
+  // the same start converges.
+  const auto c = load_case("helper_random_order_stall_cospherical_199_points.json");
+  REQUIRE(c.order == "random");
+  xp::Plain_triangulation tr;
+  build_start(tr, c);
+  ES::Swap_options options;
+  options.face_order = ES::RANDOM_ORDER;
+  options.random_seed = c.seed;
+  options.max_cycles = 1500;
+  bool always_valid = true;
+  options.cycle_visitor = [&](const ES::Cycle_record& r) {
+    if(r.cycle % 50 == 0) always_valid = always_valid && tr.is_valid();
+  };
+  const auto report = CGAL::swap_edges_with_helper(tr, options);
+  REQUIRE(report.ending == ES::CYCLE_LIMIT_REACHED);
+  REQUIRE(always_valid);
+  REQUIRE(report.non_delaunay_facets > 0);
+  REQUIRE(report.cycles.back().total_swaps() > 0);
+
+  xp::Plain_triangulation again;
+  build_start(again, c);
+  options.random_seed = 1;
+  options.cycle_visitor = nullptr;
+  REQUIRE(CGAL::swap_edges_with_helper(again, options).ending == ES::CONVERGED);
+  REQUIRE(ES::compare_with_delaunay(again).identical);
+}
+
 TEST_CASE("TOPCOM's formats: integer points out and triangulations in and malformed lines rejected", "[conjectures][files]")
 {
   std::ostringstream os;
