@@ -23,3 +23,23 @@ done
 $E experiment --families random-cube --sizes 10,20,50,100,200,500,1000 --seeds 1-100 --starts placing \
   --strategies plain --orders random -o "$D/stuck_rate.jsonl" > /dev/null
 /usr/bin/python3 doc/Edge_swapping_3/plot_conjectures.py "$D" doc/Edge_swapping_3/figures
+# The smallest kept cases (test fixtures), run to their end and drawn.
+python3 - test/Edge_swapping_3/fixtures "$D" <<'PY'
+import json, sys
+fixtures, out = sys.argv[1], sys.argv[2]
+for name, stem in (("plain_stuck_9_points.json", "stuck9"), ("helper_storage_cycle_8_points_topcom_start.json", "cycle8")):
+    j = json.load(open(f"{fixtures}/{name}"))
+    with open(f"{out}/{stem}.node", "w") as f:
+        f.write(f"{len(j['points'])} 3 0 0\n")
+        for i, p in enumerate(j["points"]):
+            f.write(f"{i + 1} {int(p[0])} {int(p[1])} {int(p[2])}\n")
+    if "cells" in j:
+        with open(f"{out}/{stem}.ele", "w") as f:
+            f.write(f"{len(j['cells'])} 4 0\n")
+            for i, c in enumerate(j["cells"]):
+                f.write(f"{i + 1} {c[0] + 1} {c[1] + 1} {c[2] + 1} {c[3] + 1}\n")
+PY
+$E optimize "$D/stuck9.node" --start placing:input --criterion delaunay --seed 6012 -o "$D/stuck9_end.ele"
+$E optimize "$D/cycle8.ele" --helper --order storage --max-cycles 300 -o "$D/cycle8_end.ele"
+/usr/bin/python3 doc/Edge_swapping_3/plot_cases.py doc/Edge_swapping_3/figures/smallest_cases.png \
+  "Plain swapping stuck (Joe's phenomenon)" "$D/stuck9_end" "Helper strategy cycling in storage order" "$D/cycle8_end"
