@@ -385,7 +385,7 @@ inline int run_experiment(const Experiment_options& opt)
           nlohmann::json file = case_json(c);
           file["outcome"] = outcome_json(o);
           file["instance"] = in.key();
-          std::ofstream(saved) << file.dump(1) << '\n';
+          if(!(std::ofstream(saved) << file.dump(1) << '\n')) throw Usage_error("cannot write '" + saved + "'");
         }
         std::lock_guard<std::mutex> lock(mutex);
         out << j.dump() << '\n' << std::flush;
@@ -482,7 +482,13 @@ inline int run_shrink(const Shrink_options& opt)
     helper.strategy = "helper";
     out["helper_from_the_same_start"] = outcome_json(run_case(helper));
   }
-  std::ofstream(opt.output) << out.dump(1) << '\n';
+  std::ofstream file(opt.output);
+  if(!(file << out.dump(1) << '\n'))
+  {
+    file.close();
+    std::remove(opt.output.c_str());
+    throw Usage_error("cannot write '" + opt.output + "'");
+  }
   std::cout << "shrink: " << c.points.size() << " points still " << expect << " (" << opt.output << ")\n";
   return 0;
 }
