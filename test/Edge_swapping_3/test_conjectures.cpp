@@ -194,8 +194,8 @@ TEST_CASE("Experiment: every triangulation of the cube from TOPCOM and both stra
   REQUIRE(r.exit_code == 0);
   // The 3-cube has 74 triangulations, all fine (its corners are its vertices).
   REQUIRE(r.err.find("TOPCOM: 74 fine triangulations of cube-corners") != std::string::npos);
-  REQUIRE(r.out.find("cube-corners n=8 seed 1: 74 triangulations; plain stuck in 0 of 148 runs; helper failed in 0 of 148 runs") !=
-          std::string::npos);
+  REQUIRE(r.out.find("cube-corners n=8 seed 1: 74 triangulations; plain stuck from 0 (0 of 148 runs); "
+                     "helper failed from 0 (0 of 148 runs)") != std::string::npos);
   const auto lines = json_lines(w.path("cube.jsonl"));
   std::size_t cube = 0;
   for(const auto& j : lines)

@@ -214,7 +214,7 @@ inline void print_summary(const std::string& path, std::ostream& os)
   std::map<std::array<std::string, 4>, Row> rows;
   struct Topcom_row
   {
-    std::set<std::string> triangulations;
+    std::set<std::string> triangulations, stuck_from, failed_from;
     std::size_t plain = 0, plain_stuck = 0, helper = 0, helper_failed = 0;
   };
   std::map<std::string, Topcom_row> topcom;
@@ -243,8 +243,14 @@ inline void print_summary(const std::string& path, std::ostream& os)
       Topcom_row& t = topcom[j["family"].get<std::string>() + " n=" + std::to_string(j["points"].get<std::size_t>()) +
                              " seed " + std::to_string(j["seed"].get<unsigned>())];
       t.triangulations.insert(j["start"].get<std::string>());
-      if(j["strategy"] == "plain") { ++t.plain; t.plain_stuck += ending == "stuck"; }
-      if(j["strategy"] == "helper") { ++t.helper; t.helper_failed += j["failure"].get<bool>(); }
+      const bool stuck = j["strategy"] == "plain" && ending == "stuck";
+      const bool failed = j["strategy"] == "helper" && j["failure"].get<bool>();
+      t.plain += j["strategy"] == "plain";
+      t.helper += j["strategy"] == "helper";
+      t.plain_stuck += stuck;
+      t.helper_failed += failed;
+      if(stuck) t.stuck_from.insert(j["start"].get<std::string>());
+      if(failed) t.failed_from.insert(j["start"].get<std::string>());
     }
   }
   char buffer[512];
@@ -267,8 +273,9 @@ inline void print_summary(const std::string& path, std::ostream& os)
   {
     os << "\nTOPCOM starts (every fine triangulation):\n";
     for(const auto& [name, t] : topcom)
-      os << "  " << name << ": " << t.triangulations.size() << " triangulations; plain stuck in " << t.plain_stuck
-         << " of " << t.plain << " runs; helper failed in " << t.helper_failed << " of " << t.helper << " runs\n";
+      os << "  " << name << ": " << t.triangulations.size() << " triangulations; plain stuck from "
+         << t.stuck_from.size() << " (" << t.plain_stuck << " of " << t.plain << " runs); helper failed from "
+         << t.failed_from.size() << " (" << t.helper_failed << " of " << t.helper << " runs)\n";
   }
 }
 
