@@ -4,29 +4,25 @@
 // resumes where it was: finished instances are skipped), and prints a summary
 // of the whole file. `--shard I/N` keeps the instances whose number is I
 // modulo N, so that N jobs of a scheduler split one experiment.
-//
-// edge_swap shrink: removes points from a saved case while it still fails.
 
 #ifndef EDGE_SWAP_EXPERIMENT_COMMAND_H
 #define EDGE_SWAP_EXPERIMENT_COMMAND_H
 
 #include "experiment_case.h"
+#include "experiment_summary.h"
+#include "topcom_runner.h"
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
-#include <CGAL/Edge_swapping_3/IO/topcom.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include <atomic>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <mutex>
-#include <random>
 #include <set>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
 
 namespace edge_swap {
 
@@ -134,45 +130,6 @@ inline std::vector<Point> shuffled(std::vector<Point> points, unsigned seed)
   return points;
 }
 
-inline std::string topcom_program()
-{
-  for(const char* name : {"topcom-points2allfinetriangs", "points2allfinetriangs"})
-    if(std::system((std::string("command -v ") + name + " > /dev/null 2>&1").c_str()) == 0) return name;
-  throw Usage_error("TOPCOM is not installed (Debian: apt-get install topcom)");
-}
-
-// Every fine triangulation of `points` (at most `limit`), from TOPCOM.
-inline std::vector<std::vector<std::array<std::size_t, 4>>> topcom_triangulations(const std::vector<Point>& points,
-                                                                                  std::size_t limit, bool& truncated)
-{
-  const std::string program = topcom_program();
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string stem = (dir / ("edge_swap_topcom_" + std::to_string(::getpid()) + "_" +
-                                   std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()))))
-                               .string();
-  {
-    std::ofstream in(stem + ".in");
-    try
-    {
-      CGAL::Edge_swapping_3::IO::write_topcom_points(in, points);
-    }
-    catch(const std::invalid_argument& e)
-    {
-      throw Usage_error(e.what());
-    }
-  }
-  const std::string command = program + " < '" + stem + ".in' 2> /dev/null | head -n " + std::to_string(limit) +
-                              " > '" + stem + ".out'";
-  const int status = std::system(command.c_str());
-  std::ifstream out(stem + ".out");
-  auto triangulations = CGAL::Edge_swapping_3::IO::read_topcom_triangulations(out);
-  std::remove((stem + ".in").c_str());
-  std::remove((stem + ".out").c_str());
-  if(status != 0 && triangulations.empty()) throw std::runtime_error("TOPCOM failed: " + command);
-  truncated = triangulations.size() >= limit;
-  return triangulations;
-}
-
 // The instance file lines already there, by key; a last line cut short by a
 // stop is removed so that appending starts on a new line.
 inline std::set<std::string> finished_keys(const std::string& path)
@@ -200,83 +157,6 @@ inline std::string file_safe(std::string s)
   for(char& ch : s)
     if(!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '.') ch = '_';
   return s;
-}
-
-// The summary of every instance in the file: per family, start, strategy and
-// order; and per TOPCOM point set.
-inline void print_summary(const std::string& path, std::ostream& os)
-{
-  struct Row
-  {
-    std::size_t instances = 0, converged = 0, stuck = 0, limit = 0, equal = 0, failures = 0, invalid = 0;
-    double cycles = 0, seconds = 0;
-  };
-  std::map<std::array<std::string, 4>, Row> rows;
-  struct Topcom_row
-  {
-    std::set<std::string> triangulations, stuck_from, failed_from;
-    std::size_t plain = 0, plain_stuck = 0, helper = 0, helper_failed = 0;
-  };
-  std::map<std::string, Topcom_row> topcom;
-  std::ifstream in(path);
-  std::string line;
-  while(std::getline(in, line))
-  {
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if(j.is_discarded() || !j.contains("key")) continue;
-    std::string start = j["start"];
-    const bool is_topcom = start.rfind("topcom:", 0) == 0;
-    if(is_topcom) start = "topcom";
-    Row& r = rows[{j["family"], start, j["strategy"], j["order"]}];
-    ++r.instances;
-    const std::string ending = j["ending"];
-    r.converged += ending == "converged";
-    r.stuck += ending == "stuck";
-    r.limit += ending == "cycle limit reached";
-    r.equal += j["equal_to_cgal"].get<bool>();
-    r.failures += j["failure"].get<bool>();
-    r.invalid += !j["valid"].get<bool>();
-    r.cycles += j["cycles"].get<double>();
-    r.seconds += j["seconds"].get<double>();
-    if(is_topcom)
-    {
-      Topcom_row& t = topcom[j["family"].get<std::string>() + " n=" + std::to_string(j["points"].get<std::size_t>()) +
-                             " seed " + std::to_string(j["seed"].get<unsigned>())];
-      t.triangulations.insert(j["start"].get<std::string>());
-      const bool stuck = j["strategy"] == "plain" && ending == "stuck";
-      const bool failed = j["strategy"] == "helper" && j["failure"].get<bool>();
-      t.plain += j["strategy"] == "plain";
-      t.helper += j["strategy"] == "helper";
-      t.plain_stuck += stuck;
-      t.helper_failed += failed;
-      if(stuck) t.stuck_from.insert(j["start"].get<std::string>());
-      if(failed) t.failed_from.insert(j["start"].get<std::string>());
-    }
-  }
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, "%-18s %-12s %-9s %-7s %9s %9s %7s %7s %9s %8s %7s %11s\n", "family", "start",
-                "strategy", "order", "instances", "converged", "stuck", "limit", "equal", "failures", "invalid",
-                "mean cycles");
-  os << buffer;
-  std::size_t total = 0;
-  for(const auto& [k, r] : rows)
-  {
-    total += r.instances;
-    std::snprintf(buffer, sizeof buffer, "%-18s %-12s %-9s %-7s %9zu %9zu %7zu %7zu %9zu %8zu %7zu %11.1f\n",
-                  k[0].c_str(), k[1].c_str(), k[2].c_str(), k[3].c_str(), r.instances, r.converged, r.stuck, r.limit,
-                  r.equal, r.failures, r.invalid, r.cycles / double(r.instances));
-    os << buffer;
-  }
-  os << total << " instances in " << path << " (failures: the helper strategy or insertion not ending on CGAL's "
-     << "Delaunay triangulation)\n";
-  if(!topcom.empty())
-  {
-    os << "\nTOPCOM starts (every fine triangulation):\n";
-    for(const auto& [name, t] : topcom)
-      os << "  " << name << ": " << t.triangulations.size() << " triangulations; plain stuck from "
-         << t.stuck_from.size() << " (" << t.plain_stuck << " of " << t.plain << " runs); helper failed from "
-         << t.failed_from.size() << " (" << t.helper_failed << " of " << t.helper << " runs)\n";
-  }
 }
 
 } // namespace internal_experiment
@@ -421,82 +301,6 @@ inline int run_experiment(const Experiment_options& opt)
   if(!error.empty()) throw Usage_error(error);
   std::cerr << "experiment: " << finished << " instances in " << timer.time() << " s on " << threads << " threads\n";
   print_summary(opt.output, std::cout);
-  return 0;
-}
-
-/// Runs a saved case again and prints its outcome (JSON).
-inline int run_replay(const std::string& path, std::size_t max_cycles)
-{
-  std::ifstream in(path);
-  if(!in) throw Usage_error("cannot read '" + path + "'");
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if(j.is_discarded()) throw Usage_error("'" + path + "' is not JSON");
-  Experiment_case c = case_from_json(j);
-  if(max_cycles) c.max_cycles = max_cycles;
-  std::cout << outcome_json(run_case(c)).dump() << '\n';
-  return 0;
-}
-
-struct Shrink_options
-{
-  std::string input, output, expect;
-};
-
-/// Removes points from a saved case, in halves, quarters, ... down to single
-/// points, as long as the case still fails as `expect` says ("failure": not
-/// CGAL's Delaunay triangulation at the end; "stuck": plain swapping stuck).
-inline int run_shrink(const Shrink_options& opt)
-{
-  std::ifstream in(opt.input);
-  if(!in) throw Usage_error("cannot read '" + opt.input + "'");
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if(j.is_discarded()) throw Usage_error("'" + opt.input + "' is not JSON");
-  Experiment_case c = case_from_json(j);
-  if(c.start == "cells") throw Usage_error("a case with an explicit start triangulation cannot be shrunk");
-  const std::string expect = !opt.expect.empty() ? opt.expect : (c.strategy == "plain" ? "stuck" : "failure");
-  if(expect != "stuck" && expect != "failure") throw Usage_error("--expect is stuck or failure");
-  auto fails = [&](const Experiment_case& k) {
-    if(!ES::point_set_problem(k.points, K()).empty()) return false;
-    const auto o = run_case(k);
-    return expect == "stuck" ? o.ending == "stuck" : !o.equal_to_cgal;
-  };
-  if(!fails(c)) throw Usage_error("the case does not fail as '" + expect + "' to begin with");
-  for(std::size_t chunk = c.points.size() / 2; chunk >= 1;)
-  {
-    bool removed = false;
-    for(std::size_t from = 0; from < c.points.size() && c.points.size() > 4;)
-    {
-      Experiment_case smaller = c;
-      const std::size_t to = std::min(from + chunk, smaller.points.size());
-      smaller.points.erase(smaller.points.begin() + from, smaller.points.begin() + to);
-      if(smaller.points.size() >= 4 && fails(smaller))
-      {
-        c = smaller;
-        removed = true;
-        std::cerr << "shrink: " << c.points.size() << " points\n";
-      }
-      else
-        from = to;
-    }
-    if(!removed) chunk /= 2;
-  }
-  nlohmann::json out = case_json(c);
-  out["outcome"] = outcome_json(run_case(c));
-  out["expect"] = expect;
-  if(expect == "stuck")
-  {
-    Experiment_case helper = c;
-    helper.strategy = "helper";
-    out["helper_from_the_same_start"] = outcome_json(run_case(helper));
-  }
-  std::ofstream file(opt.output);
-  if(!(file << out.dump(1) << '\n'))
-  {
-    file.close();
-    std::remove(opt.output.c_str());
-    throw Usage_error("cannot write '" + opt.output + "'");
-  }
-  std::cout << "shrink: " << c.points.size() << " points still " << expect << " (" << opt.output << ")\n";
   return 0;
 }
 

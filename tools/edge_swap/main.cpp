@@ -4,6 +4,7 @@
 #include "check_command.h"
 #include "demo_command.h"
 #include "experiment_command.h"
+#include "shrink_command.h"
 #include "mesh_domain_command.h"
 #include "optimize_command.h"
 #include "refine_commands.h"

@@ -1,0 +1,92 @@
+// edge_swap shrink: removes points from a saved case while it still fails;
+// edge_swap replay: runs a saved case again.
+
+#ifndef EDGE_SWAP_SHRINK_COMMAND_H
+#define EDGE_SWAP_SHRINK_COMMAND_H
+
+#include "experiment_case.h"
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace edge_swap {
+
+/// Runs a saved case again and prints its outcome (JSON).
+inline int run_replay(const std::string& path, std::size_t max_cycles)
+{
+  std::ifstream in(path);
+  if(!in) throw Usage_error("cannot read '" + path + "'");
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  if(j.is_discarded()) throw Usage_error("'" + path + "' is not JSON");
+  Experiment_case c = case_from_json(j);
+  if(max_cycles) c.max_cycles = max_cycles;
+  std::cout << outcome_json(run_case(c)).dump() << '\n';
+  return 0;
+}
+
+struct Shrink_options
+{
+  std::string input, output, expect;
+};
+
+/// Removes points from a saved case, in halves, quarters, ... down to single
+/// points, as long as the case still fails as `expect` says ("failure": not
+/// CGAL's Delaunay triangulation at the end; "stuck": plain swapping stuck).
+inline int run_shrink(const Shrink_options& opt)
+{
+  std::ifstream in(opt.input);
+  if(!in) throw Usage_error("cannot read '" + opt.input + "'");
+  const auto j = nlohmann::json::parse(in, nullptr, false);
+  if(j.is_discarded()) throw Usage_error("'" + opt.input + "' is not JSON");
+  Experiment_case c = case_from_json(j);
+  if(c.start == "cells") throw Usage_error("a case with an explicit start triangulation cannot be shrunk");
+  const std::string expect = !opt.expect.empty() ? opt.expect : (c.strategy == "plain" ? "stuck" : "failure");
+  if(expect != "stuck" && expect != "failure") throw Usage_error("--expect is stuck or failure");
+  auto fails = [&](const Experiment_case& k) {
+    if(!ES::point_set_problem(k.points, K()).empty()) return false;
+    const auto o = run_case(k);
+    return expect == "stuck" ? o.ending == "stuck" : !o.equal_to_cgal;
+  };
+  if(!fails(c)) throw Usage_error("the case does not fail as '" + expect + "' to begin with");
+  for(std::size_t chunk = c.points.size() / 2; chunk >= 1;)
+  {
+    bool removed = false;
+    for(std::size_t from = 0; from < c.points.size() && c.points.size() > 4;)
+    {
+      Experiment_case smaller = c;
+      const std::size_t to = std::min(from + chunk, smaller.points.size());
+      smaller.points.erase(smaller.points.begin() + from, smaller.points.begin() + to);
+      if(smaller.points.size() >= 4 && fails(smaller))
+      {
+        c = smaller;
+        removed = true;
+        std::cerr << "shrink: " << c.points.size() << " points\n";
+      }
+      else
+        from = to;
+    }
+    if(!removed) chunk /= 2;
+  }
+  nlohmann::json out = case_json(c);
+  out["outcome"] = outcome_json(run_case(c));
+  out["expect"] = expect;
+  if(expect == "stuck")
+  {
+    Experiment_case helper = c;
+    helper.strategy = "helper";
+    out["helper_from_the_same_start"] = outcome_json(run_case(helper));
+  }
+  std::ofstream file(opt.output);
+  if(!(file << out.dump(1) << '\n'))
+  {
+    file.close();
+    std::remove(opt.output.c_str());
+    throw Usage_error("cannot write '" + opt.output + "'");
+  }
+  std::cout << "shrink: " << c.points.size() << " points still " << expect << " (" << opt.output << ")\n";
+  return 0;
+}
+
+} // namespace edge_swap
+
+#endif
