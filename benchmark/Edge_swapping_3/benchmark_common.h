@@ -4,7 +4,9 @@
 #ifndef EDGE_SWAPPING_3_BENCHMARK_COMMON_H
 #define EDGE_SWAPPING_3_BENCHMARK_COMMON_H
 
+#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Random.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <cstdio>
@@ -57,6 +59,17 @@ inline std::vector<K::Point_3> random_points(std::size_t n)
   std::vector<K::Point_3> points;
   for(std::size_t k = 0; k < n; ++k) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
   return points;
+}
+
+// CGAL's Delaunay_triangulation_3 of the points, timed (its range constructor
+// sorts them spatially).
+inline void cgal_delaunay(std::size_t n, double* out)
+{
+  const auto points = random_points(n);
+  CGAL::Real_timer t;
+  t.start();
+  CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());
+  out[0] = t.time();
 }
 
 // TetGen's own "Delaunay seconds" on the points (file reading excluded), or -1.
