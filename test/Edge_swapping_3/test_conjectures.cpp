@@ -277,11 +277,15 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
       {"experiment --shard 3/3 -o " + w.path("o.jsonl"), "--shard"},
       {"experiment --strategies nothing -o " + w.path("o.jsonl"), "unknown strategy"},
       {"experiment --starts topcom --families random-cube --sizes 8 -o " + w.path("o.jsonl"), "integer coordinates"},
+      {"experiment --families \"\" --points-file " + w.path("three.node") + " -o " + w.path("o.jsonl"),
+       "fewer than four points"},
+      {"experiment --points-file " + w.path("missing.node") + " -o " + w.path("o.jsonl"), "missing.node"},
       {"shrink " + w.path("missing.json") + " -o " + w.path("s.json"), "cannot read"},
       {"shrink " + w.path("bad.json") + " -o " + w.path("s.json"), "not JSON"},
       {"shrink " + w.path("null.json") + " -o " + w.path("s.json"), "bad case file"},
       {"shrink " + w.path("few.json") + " -o " + w.path("s.json"), "fewer than four points"}};
   w.write("bad.json", "{\"points\": [");
+  w.write("three.node", "3 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n");
   w.write("null.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0],[0,0,null]], \"start\": \"placing\", \"strategy\": \"plain\", "
                       "\"order\": \"random\", \"seed\": 1}");
   w.write("few.json", "{\"points\": [[0,0,0],[1,0,0],[0,1,0]], \"start\": \"placing\", \"strategy\": \"plain\", "

@@ -100,17 +100,23 @@ inline std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
   }
 }
 
-// The points of a family (or of a user file, family "file:PATH"), in the
-// family's own order.
-inline std::vector<Point> family_points(const std::string& family, std::size_t size, unsigned seed)
+// The points of a user file (family "file:PATH"), read once for all instances.
+typedef std::map<std::string, std::vector<Point>> Point_files;
+
+inline std::vector<Point> read_point_file(const std::string& path)
 {
-  if(family.rfind("file:", 0) == 0)
-  {
-    std::vector<Point> points;
-    for(const auto& p : CGAL::Edge_swapping_3::IO::read_node_file(family.substr(5)).points)
-      points.emplace_back(p[0], p[1], p[2]);
-    return points;
-  }
+  std::vector<Point> points;
+  for(const auto& p : CGAL::Edge_swapping_3::IO::read_node_file(path).points) points.emplace_back(p[0], p[1], p[2]);
+  const std::string problem = ES::point_set_problem(points, K());
+  if(!problem.empty()) throw Usage_error("'" + path + "': " + problem);
+  return points;
+}
+
+// The points of a family, in the family's own order.
+inline std::vector<Point> family_points(const std::string& family, std::size_t size, unsigned seed,
+                                        const Point_files& files)
+{
+  if(family.rfind("file:", 0) == 0) return files.at(family);
   try
   {
     return ES::make_point_family<Point>(family, size, seed);
@@ -178,8 +184,14 @@ inline int run_experiment(const Experiment_options& opt)
     if(!f.empty()) families.push_back(f);
   for(const auto& f : opt.point_files) families.push_back("file:" + f);
   if(families.empty()) throw Usage_error("no point family and no --points-file");
+  Point_files files; // read, and an unknown family name rejected, before anything runs
   for(const auto& f : families)
-    if(f.rfind("file:", 0) != 0) family_points(f, 4, 1); // an unknown name fails here, before anything runs
+  {
+    if(f.rfind("file:", 0) == 0)
+      files[f] = read_point_file(f.substr(5));
+    else
+      family_points(f, 4, 1, files);
+  }
 
   // Enumerate: the same list, in the same order, for every shard and every resume.
   std::vector<Experiment_instance> instances;
@@ -195,7 +207,7 @@ inline int run_experiment(const Experiment_options& opt)
           if(start == "topcom")
           {
             bool truncated = false;
-            auto& cells = topcom_cells[set] = topcom_triangulations(family_points(family, size, seed), opt.topcom_limit,
+            auto& cells = topcom_cells[set] = topcom_triangulations(family_points(family, size, seed, files), opt.topcom_limit,
                                                                      truncated);
             count = cells.size();
             std::cerr << "experiment: TOPCOM: " << count << (truncated ? "+ (limit)" : "")
@@ -243,7 +255,7 @@ inline int run_experiment(const Experiment_options& opt)
       Experiment_case c;
       try
       {
-        c.points = family_points(in.family, in.size, in.seed);
+        c.points = family_points(in.family, in.size, in.seed, files);
         c.strategy = in.strategy;
         c.order = in.order;
         c.seed = in.seed;
