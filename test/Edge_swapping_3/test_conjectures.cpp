@@ -19,9 +19,7 @@ namespace {
 
 xp::Experiment_case load_case(const std::string& name)
 {
-  std::ifstream in(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
-  REQUIRE(in);
-  return xp::case_from_json(nlohmann::json::parse(in));
+  return xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
 }
 
 // The start triangulation of a case (placing or explicit cells).
@@ -280,7 +278,7 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
       {"experiment --families \"\" --points-file " + w.path("three.node") + " -o " + w.path("o.jsonl"),
        "fewer than four points"},
       {"experiment --points-file " + w.path("missing.node") + " -o " + w.path("o.jsonl"), "missing.node"},
-      {"shrink " + w.path("missing.json") + " -o " + w.path("s.json"), "cannot read"},
+      {"shrink " + w.path("missing.json") + " -o " + w.path("s.json"), "missing.json: cannot open the file"},
       {"shrink " + w.path("bad.json") + " -o " + w.path("s.json"), "not JSON"},
       {"shrink " + w.path("null.json") + " -o " + w.path("s.json"), "bad case file"},
       {"shrink " + w.path("few.json") + " -o " + w.path("s.json"), "fewer than four points"}};

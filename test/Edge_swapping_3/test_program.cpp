@@ -63,7 +63,9 @@ TEST_CASE("Malformed and inconsistent .node files are rejected", "[program]")
 {
   expect_rejected_node("", "empty file");
   expect_rejected_node("4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 1 1\n", "dimension is 2");
-  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n", "the file ends after 4 of 5 points");
+  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n", "more than the rest of the file can hold");
+  expect_rejected_node("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n# a comment that pads the file\n",
+                       "the file ends after 4 of 5 points");
   expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n", "more lines than");
   expect_rejected_node("4 3 0 0\n1 0 0 0\n2 1 zero 0\n3 0 1 0\n4 0 0 1\n", "cannot read a coordinate");
   expect_rejected_node("4 3 0 0\n1 0 0 0\n3 1 0 0\n2 0 1 0\n4 0 0 1\n", "out of sequence");
@@ -74,7 +76,8 @@ TEST_CASE("Malformed and inconsistent .node files are rejected", "[program]")
 TEST_CASE("Inverted - non-conforming and inconsistent meshes are rejected", "[program]")
 {
   expect_rejected_mesh("1 4 0\n1 1 2 3 9\n", "not a point of the .node file");
-  expect_rejected_mesh("2 4 0\n1 1 2 3 5\n", "the file ends after 1 of 2 tetrahedra");
+  expect_rejected_mesh("2 4 0\n1 1 2 3 5\n", "more than the rest of the file can hold");
+  expect_rejected_mesh("2 4 0\n1 1 2 3 5\n# a comment that pads the file\n", "the file ends after 1 of 2 tetrahedra");
   expect_rejected_mesh("1 4 0\n1 1 2 3 4\n", "flat");                         // four coplanar corners
   expect_rejected_mesh("1 4 0\n1 1 2 3 5\n", "is not a vertex of any tetrahedron"); // covers a corner only
   expect_rejected_mesh("1 10 0\n1 1 2 3 5 6 7 8 4 1 2\n", "only linear tetrahedra");

@@ -5,6 +5,7 @@
 #include "test_common.h"
 #include "program_runner.h"
 #include <CGAL/Edge_swapping_3/IO/medit.h>
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/IO/vtu.h>
 #include <map>
 #include <set>
@@ -235,7 +236,8 @@ TEST_CASE("Bad Medit and VTK files and refine options are rejected with exit 2 a
   struct Bad { const char* name; std::string text; const char* what; };
   const std::vector<Bad> bad = {
       {"x.mesh", "Hello\n", "not a Medit file"},
-      {"x.mesh", head + "Vertices\n2\n0 0 0 1\n", "the file ends before"},
+      {"x.mesh", head + "Vertices\n2\n0 0 0 1\n", "more than the rest of the file can hold"},
+      {"x.mesh", head + "Vertices\n2\n0 0 0 1\n# a comment that pads the file\n", "the file ends before"},
       {"x.mesh", head + "Vertices\n1\n0 nan 0 1\n", "not finite"},
       {"x.mesh", head + tet + "Tetrahedra\n1\n1 2 3 9 1\n", "vertex index 9"},
       {"x.mesh", head + tet + "Hexahedra\n0\n", "unknown or unsupported section 'Hexahedra'"},

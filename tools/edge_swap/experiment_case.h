@@ -10,6 +10,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
@@ -68,7 +69,7 @@ inline std::vector<std::array<std::size_t, 4>> oriented_cells(const std::vector<
 
 inline std::size_t scramble_flips(const std::string& start)
 {
-  return std::stoul(start.substr(start.find(':') + 1));
+  return whole_number(start.substr(start.find(':') + 1), "start scramble:K");
 }
 
 namespace internal_experiment {
@@ -112,9 +113,12 @@ inline void run_insertion(Plain_triangulation& tr, const Experiment_case& c, Exp
 
 } // namespace internal_experiment
 
-/// Runs the case exactly and compares the end with CGAL's Delaunay triangulation.
+/// Runs the case exactly and compares the end with CGAL's Delaunay
+/// triangulation. Throws Usage_error for points that cannot be triangulated.
 inline Experiment_outcome run_case(const Experiment_case& c)
 {
+  const std::string problem = ES::point_set_problem(c.points, K());
+  if(!problem.empty()) throw Usage_error(problem);
   Experiment_outcome o;
   CGAL::Real_timer timer;
   timer.start();
@@ -183,36 +187,69 @@ inline nlohmann::json case_json(const Experiment_case& c)
   return j;
 }
 
-inline Experiment_case case_from_json(const nlohmann::json& j)
+/// The case in `j`, read from the file `name`; a Usage_error that names the
+/// file and the field for anything missing, of the wrong type or out of range.
+inline Experiment_case case_from_json(const nlohmann::json& j, const std::string& name)
 {
+  auto fail = [&](const std::string& what) { throw Usage_error(name + ": bad case file: " + what); };
+  if(!j.is_object()) fail("not a JSON object");
+  auto text = [&](const char* key) {
+    if(!j.contains(key) || !j[key].is_string()) fail(std::string("\"") + key + "\" is missing or not a string");
+    return j[key].get<std::string>();
+  };
+  auto whole = [&](const char* key, unsigned long long largest) {
+    if(!j.contains(key) || !j[key].is_number_unsigned() || j[key].get<unsigned long long>() > largest)
+      fail(std::string("\"") + key + "\" is missing or not a whole number from 0 to " + std::to_string(largest));
+    return j[key].get<unsigned long long>();
+  };
   Experiment_case c;
-  try
+  if(!j.contains("points") || !j["points"].is_array()) fail("\"points\" is missing or not a list");
+  for(const auto& p : j["points"])
   {
-    for(const auto& p : j.at("points"))
-    {
-      if(!p.is_array() || p.size() != 3) throw Usage_error("a point is not three numbers");
-      c.points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
-    }
-    c.start = j.at("start").get<std::string>();
-    c.strategy = j.at("strategy").get<std::string>();
-    c.order = j.at("order").get<std::string>();
-    c.seed = j.at("seed").get<unsigned>();
-    c.max_cycles = j.value("max_cycles", std::size_t(1000));
-    if(c.start == "cells") c.cells = j.at("cells").get<std::vector<std::array<std::size_t, 4>>>();
+    if(!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+      fail("point " + std::to_string(c.points.size()) + " is not three numbers");
+    c.points.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
   }
-  catch(const nlohmann::json::exception& e)
-  {
-    throw Usage_error(std::string("bad case file: ") + e.what());
-  }
-  for(const Point& p : c.points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      throw Usage_error("bad case file: a coordinate is not finite");
+  c.start = text("start");
+  c.strategy = text("strategy");
+  c.order = text("order");
+  c.seed = unsigned(whole("seed", 4294967295ULL));
+  c.max_cycles = j.contains("max_cycles") ? std::size_t(whole("max_cycles", 1000000000ULL)) : std::size_t(1000);
   if(c.strategy != "plain" && c.strategy != "helper" && c.strategy != "insertion")
-    throw Usage_error("bad case file: unknown strategy '" + c.strategy + "'");
-  if(c.order != "storage" && c.order != "random") throw Usage_error("bad case file: unknown order '" + c.order + "'");
+    fail("unknown strategy '" + c.strategy + "' (plain, helper, insertion)");
+  if(c.order != "storage" && c.order != "random") fail("unknown order '" + c.order + "' (storage, random)");
   const std::string problem = ES::point_set_problem(c.points, K());
-  if(!problem.empty()) throw Usage_error("bad case file: " + problem);
+  if(!problem.empty()) fail(problem);
+  if(c.start.rfind("scramble:", 0) == 0)
+    whole_number(c.start.substr(9), name + ": bad case file: start scramble:K");
+  else if(c.start == "cells")
+  {
+    if(!j.contains("cells") || !j["cells"].is_array()) fail("start \"cells\" without a list \"cells\"");
+    for(const auto& t : j["cells"])
+    {
+      std::array<std::size_t, 4> cell;
+      if(!t.is_array() || t.size() != 4) fail("cell " + std::to_string(c.cells.size()) + " is not four point indices");
+      for(int i = 0; i < 4; ++i)
+      {
+        if(!t[i].is_number_unsigned() || t[i].get<unsigned long long>() >= c.points.size())
+          fail("cell " + std::to_string(c.cells.size()) + " names a point that does not exist");
+        cell[i] = t[i].get<std::size_t>();
+      }
+      c.cells.push_back(cell);
+    }
+  }
+  else if(c.start != "placing" && c.start != "-")
+    fail("unknown start '" + c.start + "' (placing, scramble:K, cells)");
   return c;
+}
+
+/// The case in the file at `path` (see `case_from_json`).
+inline Experiment_case read_case_file(const std::string& path)
+{
+  const std::string text = ES::IO::read_text_file(path);
+  const auto j = nlohmann::json::parse(text, nullptr, false);
+  if(j.is_discarded()) throw Usage_error(path + ": not JSON");
+  return case_from_json(j, path);
 }
 
 } // namespace edge_swap

@@ -13,7 +13,11 @@
 #include "topcom_runner.h"
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
+#include "output_files.h"
 #include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <system_error>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,41 +67,20 @@ namespace internal_experiment {
 
 inline std::pair<unsigned, unsigned> parse_range(const std::string& s, const std::string& what)
 {
-  try
-  {
-    const auto dash = s.find('-');
-    std::size_t used = 0;
-    const unsigned long a = std::stoul(s.substr(0, dash), &used);
-    if(used != (dash == std::string::npos ? s.size() : dash)) throw std::invalid_argument(s);
-    unsigned long b = a;
-    if(dash != std::string::npos)
-    {
-      b = std::stoul(s.substr(dash + 1), &used);
-      if(used != s.size() - dash - 1) throw std::invalid_argument(s);
-    }
-    if(b < a || b > 4000000000UL) throw std::invalid_argument(s);
-    return {unsigned(a), unsigned(b)};
-  }
-  catch(const std::exception&)
-  {
-    throw Usage_error(what + " '" + s + "' is not N or A-B");
-  }
+  const auto dash = s.find('-');
+  const unsigned long long a = whole_number(s.substr(0, dash), what, 4000000000ULL);
+  const unsigned long long b = dash == std::string::npos ? a : whole_number(s.substr(dash + 1), what, 4000000000ULL);
+  if(b < a) throw Usage_error(what + " '" + s + "' is not N or A-B with A <= B");
+  return {unsigned(a), unsigned(b)};
 }
 
 inline std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
 {
   const auto slash = s.find('/');
-  try
-  {
-    if(slash == std::string::npos) throw std::invalid_argument(s);
-    const std::size_t i = std::stoul(s.substr(0, slash)), n = std::stoul(s.substr(slash + 1));
-    if(n == 0 || i >= n) throw std::invalid_argument(s);
-    return {i, n};
-  }
-  catch(const std::exception&)
-  {
-    throw Usage_error("--shard '" + s + "' is not I/N with 0 <= I < N");
-  }
+  if(slash == std::string::npos) throw Usage_error("--shard '" + s + "' is not I/N with 0 <= I < N");
+  const std::size_t i = whole_number(s.substr(0, slash), "--shard I/N"), n = whole_number(s.substr(slash + 1), "--shard I/N");
+  if(n == 0 || i >= n) throw Usage_error("--shard '" + s + "' is not I/N with 0 <= I < N");
+  return {i, n};
 }
 
 // The points of a user file (family "file:PATH"), read once for all instances.
@@ -108,7 +91,7 @@ inline std::vector<Point> read_point_file(const std::string& path)
   std::vector<Point> points;
   for(const auto& p : CGAL::Edge_swapping_3::IO::read_node_file(path).points) points.emplace_back(p[0], p[1], p[2]);
   const std::string problem = ES::point_set_problem(points, K());
-  if(!problem.empty()) throw Usage_error("'" + path + "': " + problem);
+  if(!problem.empty()) throw Usage_error(path + ": " + problem);
   return points;
 }
 
@@ -134,28 +117,6 @@ inline std::vector<Point> shuffled(std::vector<Point> points, unsigned seed)
   for(std::size_t k = 0; k + 1 < points.size(); ++k)
     std::swap(points[k], points[k + std::size_t(r.get_int(0, int(points.size() - k)))]);
   return points;
-}
-
-// The instance file lines already there, by key; a last line cut short by a
-// stop is removed so that appending starts on a new line.
-inline std::set<std::string> finished_keys(const std::string& path)
-{
-  std::set<std::string> keys;
-  std::ifstream in(path, std::ios::binary);
-  if(!in) return keys;
-  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  in.close();
-  const auto last_newline = all.rfind('\n');
-  const std::size_t complete = (last_newline == std::string::npos) ? 0 : last_newline + 1;
-  if(complete != all.size()) std::filesystem::resize_file(path, complete);
-  std::istringstream lines(all.substr(0, complete));
-  std::string line;
-  while(std::getline(lines, line))
-  {
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if(!j.is_discarded() && j.contains("key")) keys.insert(j["key"].get<std::string>());
-  }
-  return keys;
 }
 
 inline std::string file_safe(std::string s)
@@ -184,14 +145,36 @@ inline int run_experiment(const Experiment_options& opt)
     if(!f.empty()) families.push_back(f);
   for(const auto& f : opt.point_files) families.push_back("file:" + f);
   if(families.empty()) throw Usage_error("no point family and no --points-file");
-  Point_files files; // read, and an unknown family name rejected, before anything runs
+  if(opt.threads > 256) throw Usage_error("--threads is at most 256");
+  if(opt.max_cycles > 1000000000) throw Usage_error("--max-cycles is at most 1000000000");
+  for(std::size_t size : opt.sizes)
+    if(size < 4 || size > 100000000)
+      throw Usage_error("--sizes: " + std::to_string(size) + " points; a size is from 4 to 100000000");
+  for(const auto& s : opt.starts)
+    if(s.rfind("scramble:", 0) == 0) whole_number(s.substr(9), "--starts scramble:K");
+  check_output_paths({opt.output});
+  if(!opt.cases_dir.empty() && std::filesystem::exists(opt.cases_dir) && !std::filesystem::is_directory(opt.cases_dir))
+    throw Usage_error("--cases '" + opt.cases_dir + "' is not a folder");
+  // Read, and an unknown family name or a point set that cannot be
+  // triangulated rejected, before anything runs. A family is checked at each
+  // size with the first seed; every instance checks its own points again.
+  Point_files files;
   for(const auto& f : families)
   {
     if(f.rfind("file:", 0) == 0)
       files[f] = read_point_file(f.substr(5));
     else
-      family_points(f, 4, 1, files);
+      for(std::size_t size : opt.sizes)
+      {
+        const std::string problem = ES::point_set_problem(family_points(f, size, first_seed, files), K());
+        if(!problem.empty())
+          throw Usage_error("family " + f + " with " + std::to_string(size) + " points (seed " + std::to_string(first_seed) +
+                            "): " + problem);
+      }
   }
+  // The results already there are checked before anything is appended.
+  std::set<std::string> done;
+  for(const auto& j : read_results_file(opt.output, false)) done.insert(j["key"].get<std::string>());
 
   // Enumerate: the same list, in the same order, for every shard and every resume.
   std::vector<Experiment_instance> instances;
@@ -225,7 +208,6 @@ inline int run_experiment(const Experiment_options& opt)
             instances.push_back({family, size, seed, "-", "insertion", order});
       }
 
-  const std::set<std::string> done = finished_keys(opt.output);
   std::vector<const Experiment_instance*> todo;
   std::size_t in_shard = 0;
   for(std::size_t k = 0; k < instances.size(); ++k)
@@ -238,8 +220,11 @@ inline int run_experiment(const Experiment_options& opt)
             << ", " << (in_shard - todo.size()) << " already in " << opt.output << ", " << todo.size() << " to run\n";
   if(!opt.cases_dir.empty()) std::filesystem::create_directories(opt.cases_dir);
 
-  std::ofstream out(opt.output, std::ios::app);
+  const bool existed = std::filesystem::exists(opt.output);
+  read_results_file(opt.output, true); // a line cut short by a stop is removed: appending starts on a new line
+  std::ofstream out(opt.output, std::ios::app | std::ios::binary);
   if(!out) throw Usage_error("cannot write '" + opt.output + "'");
+  std::string write_error;
   std::mutex mutex;
   std::atomic<std::size_t> next{0};
   std::size_t finished = 0, failures = 0;
@@ -284,10 +269,21 @@ inline int run_experiment(const Experiment_options& opt)
           nlohmann::json file = case_json(c);
           file["outcome"] = outcome_json(o);
           file["instance"] = in.key();
-          if(!(std::ofstream(saved) << file.dump(1) << '\n')) throw Usage_error("cannot write '" + saved + "'");
+          std::ofstream case_file(saved);
+          case_file << file.dump(1) << '\n';
+          case_file.close();
+          if(!case_file) throw Usage_error("cannot write '" + saved + "'");
         }
         std::lock_guard<std::mutex> lock(mutex);
+        errno = 0;
         out << j.dump() << '\n' << std::flush;
+        if(!out)
+        {
+          if(write_error.empty())
+            write_error = "cannot write '" + opt.output + "'" + (errno ? std::string(": ") + std::strerror(errno) : "");
+          next = todo.size();
+          return;
+        }
         ++finished;
         failures += is_failure(c, o);
         if(timer.time() >= next_report)
@@ -305,14 +301,35 @@ inline int run_experiment(const Experiment_options& opt)
       }
     }
   };
-  const unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  // As many threads as can start (at least this one): a thread that cannot
+  // start is reported, not fatal.
+  const unsigned wanted = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
-  for(unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+  for(unsigned t = 1; t < wanted; ++t)
+  {
+    try
+    {
+      pool.emplace_back(work);
+    }
+    catch(const std::system_error& e)
+    {
+      std::cerr << "experiment: warning: only " << t << " of " << wanted << " threads could start (" << e.what() << ")\n";
+      break;
+    }
+  }
+  const unsigned threads = unsigned(pool.size()) + 1;
+  work();
   for(auto& t : pool) t.join();
   out.close();
+  if(!out && write_error.empty()) write_error = "cannot write '" + opt.output + "'";
+  if(!write_error.empty())
+  {
+    if(!existed && finished == 0) std::remove(opt.output.c_str());
+    throw Usage_error(write_error);
+  }
   if(!error.empty()) throw Usage_error(error);
   std::cerr << "experiment: " << finished << " instances in " << timer.time() << " s on " << threads << " threads\n";
-  print_summary(opt.output, std::cout);
+  print_summary(opt.output, read_results_file(opt.output, false), std::cout);
   return 0;
 }
 

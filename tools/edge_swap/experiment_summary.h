@@ -1,13 +1,17 @@
-// The summary of an experiment's JSON lines: per family, start, strategy and
+// An experiment's results file (JSON lines, one per instance): reading it
+// with every line checked, and its summary per family, start, strategy and
 // order, and per point set of TOPCOM starts.
 
 #ifndef EDGE_SWAP_EXPERIMENT_SUMMARY_H
 #define EDGE_SWAP_EXPERIMENT_SUMMARY_H
 
+#include "types.h"
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <nlohmann/json.hpp>
+#include <filesystem>
+#include <vector>
 #include <array>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <set>
@@ -15,8 +19,54 @@
 
 namespace edge_swap {
 
-/// Prints the summary of every instance in the file at `path`.
-inline void print_summary(const std::string& path, std::ostream& os)
+/// An empty string if `j` is a results line as `experiment` writes it
+/// (every field the summary and resuming read, of the right type); otherwise
+/// the first problem.
+inline std::string results_line_problem(const nlohmann::json& j)
+{
+  if(!j.is_object()) return "not a JSON object";
+  for(const char* key : {"key", "family", "start", "strategy", "order", "ending"})
+    if(!j.contains(key) || !j[key].is_string()) return std::string("\"") + key + "\" is missing or not a string";
+  for(const char* key : {"size", "points", "seed"})
+    if(!j.contains(key) || !j[key].is_number_unsigned()) return std::string("\"") + key + "\" is missing or not a whole number";
+  if(j["seed"].get<unsigned long long>() > 4294967295ULL) return "\"seed\" is too large";
+  for(const char* key : {"cycles", "seconds"})
+    if(!j.contains(key) || !j[key].is_number()) return std::string("\"") + key + "\" is missing or not a number";
+  for(const char* key : {"failure", "equal_to_cgal", "valid"})
+    if(!j.contains(key) || !j[key].is_boolean()) return std::string("\"") + key + "\" is missing or not true or false";
+  return std::string();
+}
+
+/// The lines of the results file at `path`, each checked; a Usage_error names
+/// the file, the line and the problem. A last line without its newline (a run
+/// stopped while writing it) is left out, and with `drop_cut_line` removed
+/// from the file, so that appending starts on a new line. A missing file has
+/// no lines.
+inline std::vector<nlohmann::json> read_results_file(const std::string& path, bool drop_cut_line)
+{
+  std::vector<nlohmann::json> lines;
+  std::error_code ec;
+  if(!std::filesystem::exists(path, ec)) return lines;
+  const std::string text = CGAL::Edge_swapping_3::IO::read_text_file(path);
+  const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  std::size_t number = 0;
+  for(std::size_t begin = 0; begin < complete;)
+  {
+    const std::size_t end = text.find('\n', begin);
+    ++number;
+    const auto j = nlohmann::json::parse(text.begin() + std::ptrdiff_t(begin), text.begin() + std::ptrdiff_t(end), nullptr, false);
+    begin = end + 1;
+    if(j.is_discarded()) throw Usage_error(path + ":" + std::to_string(number) + ": not a JSON line");
+    const std::string problem = results_line_problem(j);
+    if(!problem.empty()) throw Usage_error(path + ":" + std::to_string(number) + ": not a results line: " + problem);
+    lines.push_back(j);
+  }
+  if(drop_cut_line && complete != text.size()) std::filesystem::resize_file(path, complete);
+  return lines;
+}
+
+/// Prints the summary of the results `lines` (checked by `read_results_file`) of the file `path`.
+inline void print_summary(const std::string& path, const std::vector<nlohmann::json>& lines, std::ostream& os)
 {
   struct Row
   {
@@ -30,12 +80,8 @@ inline void print_summary(const std::string& path, std::ostream& os)
     std::size_t plain = 0, plain_stuck = 0, helper = 0, helper_failed = 0;
   };
   std::map<std::string, Topcom_row> topcom;
-  std::ifstream in(path);
-  std::string line;
-  while(std::getline(in, line))
+  for(const auto& j : lines)
   {
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if(j.is_discarded() || !j.contains("key")) continue;
     std::string start = j["start"];
     const bool is_topcom = start.rfind("topcom:", 0) == 0;
     if(is_topcom) start = "topcom";

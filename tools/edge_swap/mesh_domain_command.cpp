@@ -70,8 +70,9 @@ std::vector<K::Point_3> points_on_sphere(const K::Point_3& center, double radius
 int run_mesh_domain(const std::string& name, const std::string& output, double size)
 {
   if(name != "two-spheres") throw Usage_error("unknown domain '" + name + "' (known: two-spheres)");
-  if(!(size > 0)) throw Usage_error("--size must be positive");
-  require_output_format(output);
+  // Below 0.05 the mesh would have millions of vertices: a typo, not a wish.
+  if(!(size >= 0.05 && size <= 100)) throw Usage_error("--size is from 0.05 to 100");
+  check_output_paths(mesh_output_paths(output));
   const Two_spheres g;
   const double margin = 0.5;
   Domain domain(Flow_region{g},
@@ -145,7 +146,7 @@ int run_mesh_domain(const std::string& name, const std::string& output, double s
   const std::string problem = build_mesh(tr, in);
   if(!problem.empty()) throw std::runtime_error("the Mesh_3 triangulation did not convert: " + problem);
 
-  Atomic_files files;
+  Output_files files;
   add_mesh_files(files, output, tr, in);
   files.commit();
   std::size_t flow_cells = 0;

@@ -1,10 +1,10 @@
 // Reading the program's input (TetGen .node/.ele, Medit .mesh, VTK .vtu) and
-// writing its outputs all or nothing: each file goes to a temporary name
-// first and is renamed only when every file is complete.
+// adding its mesh outputs to the files written all or nothing.
 
 #ifndef EDGE_SWAP_MESH_FILES_H
 #define EDGE_SWAP_MESH_FILES_H
 
+#include "output_files.h"
 #include "types.h"
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
@@ -13,13 +13,11 @@
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <algorithm>
-#include <cstdio>
-#include <fstream>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 namespace edge_swap {
@@ -57,6 +55,10 @@ struct Input
     return it == field_names.end() ? -1 : int(it - field_names.begin());
   }
 };
+
+/// The largest field value supported: differences, interpolations and the
+/// gradient indicator of such values stay finite.
+constexpr double max_field_value = 1e100;
 
 inline Input read_input(const std::string& path)
 {
@@ -107,11 +109,23 @@ inline Input read_input(const std::string& path)
       if(name == "subdomain")
       {
         in.has_references = true;
-        for(double v : values) in.cell_references.push_back(int(v));
+        for(std::size_t k = 0; k < values.size(); ++k)
+        {
+          const double v = values[k];
+          if(!(v == std::floor(v) && std::abs(v) <= 1e9))
+            throw IO::Input_error(path + ": cell field 'subdomain': the value of cell " + std::to_string(k) +
+                                  " is not a whole number of at most 1e9 in magnitude");
+          in.cell_references.push_back(int(v));
+        }
       }
   }
   else
     throw Usage_error("input '" + path + "' is not a .node, .ele, .mesh or .vtu file");
+  for(std::size_t f = 0; f < in.fields.size(); ++f)
+    for(std::size_t k = 0; k < in.fields[f].size(); ++k)
+      if(!(std::abs(in.fields[f][k]) <= max_field_value))
+        throw IO::Input_error(path + ": field '" + in.field_names[f] + "' at point " + std::to_string(k) +
+                              " is larger than 1e100 in magnitude, the largest field value supported");
   for(const auto& p : coordinates) in.points.emplace_back(p[0], p[1], p[2]);
   return in;
 }
@@ -189,41 +203,6 @@ inline void add_vertex(Input& in, Triangulation::Vertex_handle v, const std::vec
   for(std::size_t f = 0; f < in.fields.size(); ++f) in.fields[f].push_back(values[f]);
 }
 
-/// Writes several files all or nothing. Each writer fills a stream.
-class Atomic_files
-{
-public:
-  void add(const std::string& path, std::function<void(std::ostream&)> writer)
-  {
-    files_.push_back({path, std::move(writer)});
-  }
-
-  void commit()
-  {
-    std::vector<std::string> temporary;
-    auto discard = [&] { for(const auto& t : temporary) std::remove(t.c_str()); };
-    for(const auto& f : files_)
-    {
-      const std::string tmp = f.path + ".tmp" + std::to_string(::getpid());
-      temporary.push_back(tmp);
-      std::ofstream out(tmp);
-      if(out) f.writer(out);
-      out.close();
-      if(!out) { discard(); throw Usage_error("cannot write '" + f.path + "'"); }
-    }
-    for(std::size_t k = 0; k < files_.size(); ++k)
-      if(std::rename(temporary[k].c_str(), files_[k].path.c_str()) != 0)
-      {
-        discard();
-        throw Usage_error("cannot write '" + files_[k].path + "'");
-      }
-  }
-
-private:
-  struct File { std::string path; std::function<void(std::ostream&)> writer; };
-  std::vector<File> files_;
-};
-
 /// Whether `path` names an output format the program writes.
 inline void require_output_format(const std::string& path)
 {
@@ -231,10 +210,18 @@ inline void require_output_format(const std::string& path)
     throw Usage_error("output '" + path + "' is not an .ele, .mesh or .vtu file");
 }
 
+/// The files a mesh output `path` writes: Y.ele comes with Y.node.
+inline std::vector<std::string> mesh_output_paths(const std::string& path)
+{
+  require_output_format(path);
+  if(ends_with(path, ".ele")) return {path, stem(path) + ".node"};
+  return {path};
+}
+
 /// Adds the files of the output `path`: Y.ele with Y.node (fields as
 /// attributes), Y.mesh (Medit: subdomains, constrained facets), or Y.vtu
 /// (ParaView: fields per vertex; subdomain and quality per cell).
-inline void add_mesh_files(Atomic_files& files, const std::string& path, const Triangulation& tr, const Input& in)
+inline void add_mesh_files(Output_files& files, const std::string& path, const Triangulation& tr, const Input& in)
 {
   require_output_format(path);
   auto coordinates = std::make_shared<std::vector<std::array<double, 3>>>();

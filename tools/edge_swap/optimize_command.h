@@ -36,10 +36,7 @@ inline void build_start(Triangulation& tr, const Input& in, const std::string& s
   for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
   if(start.rfind("scramble:", 0) == 0)
   {
-    const std::string k = start.substr(9);
-    if(k.empty() || k.find_first_not_of("0123456789") != std::string::npos)
-      throw Usage_error("--start scramble:K needs a whole number K, not '" + k + "'");
-    ES::scramble(tr, std::stoull(k), seed);
+    ES::scramble(tr, whole_number(start.substr(9), "--start scramble:K"), seed);
   }
 }
 
@@ -64,11 +61,15 @@ auto with_criterion(const std::string& name, ES::Perturbation perturbation, Run 
 inline int run_optimize(const Optimize_options& o)
 {
   // Every option is checked before any work, and nothing is written before the end.
-  require_output_format(o.output);
+  std::vector<std::string> outputs = mesh_output_paths(o.output);
+  outputs.push_back(o.history);
+  outputs.push_back(o.stats);
+  check_output_paths(outputs);
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
   if(o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
+  if(o.start.rfind("scramble:", 0) == 0) whole_number(o.start.substr(9), "--start scramble:K");
 
   Input in = read_input(o.input);
   Triangulation tr;
@@ -104,7 +105,7 @@ inline int run_optimize(const Optimize_options& o)
   });
   const ES::Mesh_statistics after = ES::mesh_statistics(tr);
 
-  Atomic_files files;
+  Output_files files;
   add_mesh_files(files, o.output, tr, in);
   if(!o.history.empty())
     files.add(o.history, [&report](std::ostream& out) {

@@ -40,7 +40,7 @@ inline std::vector<double> field_values(const Input& in, const Point& p,
   return values;
 }
 
-inline void write_rounds(Atomic_files& files, const std::string& path, const ES::Refinement_report& report)
+inline void write_rounds(Output_files& files, const std::string& path, const ES::Refinement_report& report)
 {
   if(path.empty()) return;
   files.add(path, [report](std::ostream& out) {
@@ -57,7 +57,7 @@ struct Insert_options
 
 inline int run_insert(const Insert_options& o)
 {
-  require_output_format(o.output);
+  check_output_paths(mesh_output_paths(o.output));
   Triangulation tr;
   Input in = read_mesh(o.mesh, tr);
   const IO::Node_file node = IO::read_node_file(o.points);
@@ -86,7 +86,7 @@ inline int run_insert(const Insert_options& o)
       return 0;
     });
   });
-  Atomic_files files;
+  Output_files files;
   add_mesh_files(files, o.output, tr, in);
   files.commit();
   std::cout << "inserted " << inserted << " points (" << existing << " on existing vertices, " << refused
@@ -110,9 +110,7 @@ inline std::vector<std::size_t> parse_site_counts(const std::string& text)
   std::string item;
   while(std::getline(s, item, ','))
   {
-    if(item.empty() || item.find_first_not_of("0123456789") != std::string::npos)
-      throw Usage_error("--sites is a list of whole numbers such as 2000,2000, not '" + text + "'");
-    counts.push_back(std::stoull(item));
+    counts.push_back(whole_number(item, "--sites (a list such as 2000,2000)"));
   }
   if(counts.empty()) throw Usage_error("--sites is empty");
   return counts;
@@ -120,7 +118,9 @@ inline std::vector<std::size_t> parse_site_counts(const std::string& text)
 
 inline int run_refine(const Refine_options& o)
 {
-  require_output_format(o.output);
+  std::vector<std::string> outputs = mesh_output_paths(o.output);
+  outputs.push_back(o.history);
+  check_output_paths(outputs);
   if(o.by != "aspect-ratio" && o.by != "gradient") throw Usage_error("--by is aspect-ratio or gradient");
   if(o.ratio != "edge" && o.ratio != "radius") throw Usage_error("--ratio is edge or radius");
   if(o.by == "aspect-ratio" && !(o.target >= 1)) throw Usage_error("--by aspect-ratio needs --target R with R >= 1");
@@ -190,7 +190,7 @@ inline int run_refine(const Refine_options& o)
     });
   });
 
-  Atomic_files files;
+  Output_files files;
   add_mesh_files(files, o.output, tr, in);
   write_rounds(files, o.history, total);
   files.commit();
@@ -209,6 +209,7 @@ inline int run_refine(const Refine_options& o)
 /// `json`, to a file.
 inline int run_stats(const std::string& path, const std::string& json)
 {
+  check_output_paths({json});
   Triangulation tr;
   const Input in = read_mesh(path, tr);
   std::vector<double> angles, edge_ratio, radius_ratio;
@@ -226,7 +227,7 @@ inline int run_stats(const std::string& path, const std::string& json)
   if(cells == 0) throw IO::Input_error(path + ": no tetrahedron in the domain (every reference is 0)");
   auto histogram = [](const std::vector<double>& v, double lo, double width, std::size_t bins) {
     std::vector<std::size_t> h(bins, 0);
-    for(double x : v) h[std::min(bins - 1, std::size_t(std::max(0.0, (x - lo) / width)))]++;
+    for(double x : v) h[std::size_t(std::min(double(bins - 1), std::max(0.0, (x - lo) / width)))]++;
     return h;
   };
   auto range = [](const std::vector<double>& v) {
@@ -252,7 +253,7 @@ inline int run_stats(const std::string& path, const std::string& json)
   std::cout << '\n';
   if(!json.empty())
   {
-    Atomic_files files;
+    Output_files files;
     files.add(json, [&](std::ostream& out) {
       nlohmann::json j = {{"mesh", path},
                           {"vertices", tr.number_of_vertices()},

@@ -5,6 +5,7 @@
 #define EDGE_SWAP_SHRINK_COMMAND_H
 
 #include "experiment_case.h"
+#include "output_files.h"
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -14,11 +15,7 @@ namespace edge_swap {
 /// Runs a saved case again and prints its outcome (JSON).
 inline int run_replay(const std::string& path, std::size_t max_cycles)
 {
-  std::ifstream in(path);
-  if(!in) throw Usage_error("cannot read '" + path + "'");
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if(j.is_discarded()) throw Usage_error("'" + path + "' is not JSON");
-  Experiment_case c = case_from_json(j);
+  Experiment_case c = read_case_file(path);
   if(max_cycles) c.max_cycles = max_cycles;
   std::cout << outcome_json(run_case(c)).dump() << '\n';
   return 0;
@@ -34,11 +31,8 @@ struct Shrink_options
 /// CGAL's Delaunay triangulation at the end; "stuck": plain swapping stuck).
 inline int run_shrink(const Shrink_options& opt)
 {
-  std::ifstream in(opt.input);
-  if(!in) throw Usage_error("cannot read '" + opt.input + "'");
-  const auto j = nlohmann::json::parse(in, nullptr, false);
-  if(j.is_discarded()) throw Usage_error("'" + opt.input + "' is not JSON");
-  Experiment_case c = case_from_json(j);
+  check_output_paths({opt.output});
+  Experiment_case c = read_case_file(opt.input);
   if(c.start == "cells") throw Usage_error("a case with an explicit start triangulation cannot be shrunk");
   const std::string expect = !opt.expect.empty() ? opt.expect : (c.strategy == "plain" ? "stuck" : "failure");
   if(expect != "stuck" && expect != "failure") throw Usage_error("--expect is stuck or failure");
@@ -76,13 +70,9 @@ inline int run_shrink(const Shrink_options& opt)
     helper.strategy = "helper";
     out["helper_from_the_same_start"] = outcome_json(run_case(helper));
   }
-  std::ofstream file(opt.output);
-  if(!(file << out.dump(1) << '\n'))
-  {
-    file.close();
-    std::remove(opt.output.c_str());
-    throw Usage_error("cannot write '" + opt.output + "'");
-  }
+  Output_files files;
+  files.add(opt.output, [&out](std::ostream& os) { os << out.dump(1) << '\n'; });
+  files.commit();
   std::cout << "shrink: " << c.points.size() << " points still " << expect << " (" << opt.output << ")\n";
   return 0;
 }

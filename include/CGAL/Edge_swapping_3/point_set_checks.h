@@ -1,10 +1,15 @@
 // The problems that keep a point set from having a 3-D triangulation, named
-// for the user: too few points, duplicates, all coplanar. Exact predicates.
+// for the user: coordinates outside the supported range, too few points,
+// duplicates, all coplanar. Exact predicates.
 
 #ifndef CGAL_EDGE_SWAPPING_3_POINT_SET_CHECKS_H
 #define CGAL_EDGE_SWAPPING_3_POINT_SET_CHECKS_H
 
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -12,12 +17,43 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 
-/// An empty string if `points` (finite coordinates) span 3-D space with no
+/// The supported coordinate range: every coordinate is 0 or has a magnitude
+/// in [`min_nonzero_coordinate`, `max_coordinate`]. The exact predicates have
+/// no limit, but the constructions do: within this range, every one the
+/// package makes (circumcenters, squared distances, barycentric weights, the
+/// quality measures: products of up to six coordinate differences) stays
+/// finite and clear of underflow.
+constexpr double max_coordinate = 1e30;
+constexpr double min_nonzero_coordinate = 1e-30;
+
+/// An empty string if `x` is a supported coordinate; otherwise why not.
+inline std::string coordinate_problem(double x)
+{
+  if(std::isnan(x)) return "a coordinate is not a number (nan)";
+  if(std::isinf(x)) return "a coordinate is not finite";
+  const double a = std::abs(x);
+  if(a > max_coordinate || (a != 0 && a < min_nonzero_coordinate))
+  {
+    char buffer[160];
+    std::snprintf(buffer, sizeof buffer,
+                  "the coordinate %.17g is outside the supported range (0, or 1e-30 to 1e30 in magnitude)", x);
+    return buffer;
+  }
+  return std::string();
+}
+
+/// An empty string if `points` (coordinates in the supported range) span 3-D space with no
 /// point repeated; otherwise what is wrong, with 0-based point numbers.
 template <class Gt>
 std::string point_set_problem(const std::vector<typename Gt::Point_3>& points, const Gt& gt = Gt())
 {
   const std::size_t n = points.size();
+  for(std::size_t k = 0; k < n; ++k)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::string problem = coordinate_problem(CGAL::to_double(points[k][c]));
+      if(!problem.empty()) return "point " + std::to_string(k) + ": " + problem;
+    }
   if(n < 4) return "fewer than four points (" + std::to_string(n) + ")";
 
   std::vector<std::size_t> order(n);

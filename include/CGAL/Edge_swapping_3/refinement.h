@@ -12,6 +12,7 @@
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <cmath>
 #include <algorithm>
@@ -153,6 +154,10 @@ bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constra
 {
   p = tr.geom_traits().construct_circumcenter_3_object()(c->vertex(0)->point(), c->vertex(1)->point(),
                                                           c->vertex(2)->point(), c->vertex(3)->point());
+  // The circumcenter of a cell too flat for double precision can be far off,
+  // or not a number: such a site is refused, and the mesh stays in range.
+  for(int k = 0; k < 3; ++k)
+    if(!coordinate_problem(CGAL::to_double(p[k])).empty()) return false;
   typename Tr::Locate_type lt;
   int li, lj;
   at = tr.locate(p, lt, li, lj, c);

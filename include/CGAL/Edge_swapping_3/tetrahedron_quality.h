@@ -1,5 +1,9 @@
 // Quality measures of a tetrahedron: dihedral angles and the paper's two
 // aspect ratios. Constructions in double precision: approximate by nature.
+// Every measure is scale invariant, so it is computed on the edge vectors
+// scaled to at most 1 (no overflow or underflow whatever the coordinates),
+// and it is always a finite number: a tetrahedron too flat for double
+// precision gets the largest double as its aspect ratio.
 
 #ifndef CGAL_EDGE_SWAPPING_3_TETRAHEDRON_QUALITY_H
 #define CGAL_EDGE_SWAPPING_3_TETRAHEDRON_QUALITY_H
@@ -7,6 +11,7 @@
 #include <CGAL/number_utils.h>
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 
 namespace CGAL {
@@ -22,14 +27,26 @@ inline Vec cross(const Vec& a, const Vec& b)
 inline double dot(const Vec& a, const Vec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
 
+// The vertices relative to the first, divided by the largest coordinate
+// difference: each component is at most 1 in magnitude.
 template <class Point>
 std::array<Vec, 4> to_vecs(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
 {
   auto v = [](const Point& p) {
     return Vec{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
   };
-  return {v(p0), v(p1), v(p2), v(p3)};
+  const Vec o = v(p0);
+  std::array<Vec, 4> r = {Vec{0, 0, 0}, sub(v(p1), o), sub(v(p2), o), sub(v(p3), o)};
+  double largest = 0;
+  for(const Vec& d : r) largest = (std::max)({largest, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+  if(largest > 0 && std::isfinite(largest))
+    for(Vec& d : r) d = Vec{d.x / largest, d.y / largest, d.z / largest};
+  return r;
 }
+
+// A ratio that is not a finite number (a tetrahedron too flat for double
+// precision) becomes the largest double.
+inline double finite_ratio(double r) { return (r >= 0 && r <= DBL_MAX) ? r : DBL_MAX; }
 } // namespace internal
 
 /// The six dihedral angles, in degrees, of a non-degenerate tetrahedron.
@@ -57,8 +74,10 @@ std::array<double, 6> dihedral_angles(const Point& p0, const Point& p1,
   {
     const Vec& a = n[faces[e][0]];
     const Vec& b = n[faces[e][1]];
-    double c = -dot(a, b) / (norm(a) * norm(b));
-    c = (std::max)(-1.0, (std::min)(1.0, c));
+    const double length = norm(a) * norm(b);
+    // A face too thin for double precision has no normal: call its angles 0.
+    double c = length > 0 ? -dot(a, b) / length : 1.0;
+    c = std::isfinite(c) ? (std::max)(-1.0, (std::min)(1.0, c)) : 1.0;
     angles[e] = std::acos(c) * to_degrees;
   }
   return angles;
@@ -78,11 +97,11 @@ double edge_length_ratio(const Point& p0, const Point& p1, const Point& p2, cons
       lo = (std::min)(lo, dot(d, d));
       hi = (std::max)(hi, dot(d, d));
     }
-  return std::sqrt(hi / lo);
+  return finite_ratio(std::sqrt(hi / lo));
 }
 
 /// Circumradius over inradius (the paper's second aspect ratio; 3 for a
-/// regular tetrahedron, infinite for a flat one).
+/// regular tetrahedron; the largest double for one too flat for double precision).
 template <class Point>
 double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
 {
@@ -90,7 +109,7 @@ double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Poi
   const auto v = to_vecs(p0, p1, p2, p3);
   const Vec a = sub(v[1], v[0]), b = sub(v[2], v[0]), c = sub(v[3], v[0]);
   const double six_volume = std::abs(dot(a, cross(b, c)));
-  if(six_volume == 0) return HUGE_VAL;
+  if(!(six_volume > 0)) return DBL_MAX;
   // Circumcentre relative to v0: (|a|^2 (b x c) + |b|^2 (c x a) + |c|^2 (a x b)) / (2 a.(b x c)).
   const Vec bc = cross(b, c), ca = cross(c, a), ab = cross(a, b);
   const double la = dot(a, a), lb = dot(b, b), lc = dot(c, c);
@@ -101,7 +120,7 @@ double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Poi
   for(int k = 0; k < 4; ++k)
     area2 += norm(cross(sub(v[(k + 2) & 3], v[(k + 1) & 3]), sub(v[(k + 3) & 3], v[(k + 1) & 3])));
   const double inradius = six_volume / area2; // 3V / A
-  return circumradius / inradius;
+  return finite_ratio(circumradius / inradius);
 }
 
 } // namespace Edge_swapping_3

@@ -18,7 +18,8 @@ namespace Edge_swapping_3 {
 /// Makes the empty `tr` the triangulation with the given points and
 /// tetrahedra (0-based indices). Accepts every tetrahedron positively
 /// oriented, or every one negatively oriented (then all are reversed).
-/// Returns an empty string on success; otherwise the problem (flat or
+/// Returns an empty string on success; otherwise the problem (a point index
+/// out of range or repeated in a tetrahedron, flat or
 /// inverted tetrahedron, a facet shared by three tetrahedra, overlapping
 /// neighbours, unused point, boundary not a closed convex surface), and
 /// `tr` is left empty. `vertices` receives the vertex of each point.
@@ -37,6 +38,17 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   std::string problem = point_set_problem(points, tr.geom_traits());
   if(!problem.empty()) return problem;
   if(cells.empty()) return "no tetrahedra";
+  // Every reader hands its cells over here: indices are checked once, first.
+  for(std::size_t k = 0; k < cells.size(); ++k)
+    for(int i = 0; i < 4; ++i)
+    {
+      if(cells[k][i] >= points.size())
+        return cell_name(k) + " names point " + std::to_string(cells[k][i]) + ", but there are only " +
+               std::to_string(points.size()) + " points";
+      for(int j = 0; j < i; ++j)
+        if(cells[k][i] == cells[k][j])
+          return cell_name(k) + " names point " + std::to_string(cells[k][i]) + " twice";
+    }
 
   // Orientation: all one way, no flat cell.
   int sign = 0;

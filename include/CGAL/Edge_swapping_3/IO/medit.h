@@ -9,12 +9,11 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IO_MEDIT_H
 #define CGAL_EDGE_SWAPPING_3_IO_MEDIT_H
 
-#include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <array>
-#include <cmath>
-#include <fstream>
-#include <map>
+#include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CGAL {
@@ -31,139 +30,111 @@ struct Medit_mesh
   std::vector<int> tetrahedron_references;
 };
 
-namespace internal {
-
-// Whitespace-separated tokens with the line each comes from.
-class Token_reader
+/// Reads the text of a Medit file; `name` is the file name used in messages.
+inline Medit_mesh read_medit_text(const std::string& name, std::string_view text)
 {
-public:
-  explicit Token_reader(const std::string& path) : path_(path), in_(path)
-  {
-    if(!in_) throw Input_error(path + ": cannot open the file");
-  }
-
-  bool next(std::string& token)
-  {
-    while(!(line_ >> token))
-    {
-      std::string s;
-      if(!std::getline(in_, s)) return false;
-      ++number_;
-      const auto hash = s.find('#');
-      if(hash != std::string::npos) s.erase(hash);
-      line_.clear();
-      line_.str(s);
-    }
-    return true;
-  }
-
-  template <class T>
-  T read(const char* what)
-  {
-    std::string token;
-    if(!next(token)) fail(std::string("the file ends before ") + what);
-    return parse_token<T>(token, what, [this](const std::string& m) { fail(m); });
-  }
-
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw Input_error(path_ + ":" + std::to_string(number_) + ": " + what);
-  }
-
-private:
-  std::string path_;
-  std::ifstream in_;
-  std::istringstream line_;
-  std::size_t number_ = 0;
-};
-
-} // namespace internal
-
-inline Medit_mesh read_medit_file(const std::string& path)
-{
-  internal::Token_reader r(path);
+  internal::Text_scanner r(name, text);
   Medit_mesh m;
-  std::string keyword;
+  std::string_view keyword;
   bool dimension_seen = false, vertices_seen = false;
-  // The sections skipped, with the number of numbers per entry.
-  const std::map<std::string, int> skipped = {{"Edges", 3}, {"Corners", 1}, {"Ridges", 1},
-                                              {"RequiredVertices", 1}, {"RequiredEdges", 1},
-                                              {"Quadrilaterals", 5}};
-  auto index = [&](std::size_t n_points) {
-    const long long i = r.read<long long>("a vertex index");
-    if(i < 1 || i > (long long)n_points)
-      r.fail("vertex index " + std::to_string(i) + " is not one of the " + std::to_string(n_points) + " vertices");
+  auto token = [&](const std::string& what) {
+    std::string_view t;
+    if(!r.next_token(t)) r.fail("the file ends before " + what);
+    return t;
+  };
+  auto read_int = [&](const std::string& what) { return r.number<int>(token(what), what); };
+  auto index = [&]() {
+    const std::string_view t = token("a vertex index");
+    const long long i = r.number<long long>(t, "a vertex index");
+    if(i < 1 || i > (long long)m.points.size())
+      r.fail("vertex index " + std::to_string(i) + " is not one of the " + std::to_string(m.points.size()) + " vertices");
     return std::size_t(i - 1);
   };
-  auto count = [&](const char* what) {
-    const long long n = r.read<long long>(what);
-    if(n < 0) r.fail(std::string("negative ") + what);
-    return std::size_t(n);
+  // A count of entries of `numbers` numbers each: each takes at least 2 bytes a number.
+  auto count = [&](const std::string& what, std::size_t numbers) {
+    return r.count(token(what), what, 2 * numbers);
+  };
+  // The sections skipped, with the number of numbers per entry.
+  auto skipped_numbers = [](std::string_view k) -> std::size_t {
+    if(k == "Edges") return 3;
+    if(k == "Corners" || k == "Ridges" || k == "RequiredVertices" || k == "RequiredEdges") return 1;
+    if(k == "Quadrilaterals") return 5;
+    return 0;
   };
 
-  if(!r.next(keyword)) r.fail("empty file");
-  if(keyword != "MeshVersionFormatted") r.fail("not a Medit file: it starts with '" + keyword + "'");
-  r.read<int>("the format version");
-  while(r.next(keyword))
+  if(!r.next_token(keyword)) r.fail("empty file");
+  if(keyword != "MeshVersionFormatted") r.fail("not a Medit file: it starts with " + quote_token(keyword));
+  read_int("the format version");
+  while(r.next_token(keyword))
   {
     if(keyword == "End") break;
     if(keyword == "Dimension")
     {
-      const int d = r.read<int>("the dimension");
+      if(dimension_seen) r.fail("a second Dimension");
+      const int d = read_int("the dimension");
       if(d != 3) r.fail("the dimension is " + std::to_string(d) + ", not 3");
       dimension_seen = true;
     }
     else if(keyword == "Vertices")
     {
-      const std::size_t n = count("number of vertices");
+      if(vertices_seen) r.fail("a second Vertices section");
+      const std::size_t n = count("number of vertices", 4);
+      m.points.reserve(n);
+      m.point_references.reserve(n);
       for(std::size_t k = 0; k < n; ++k)
       {
         std::array<double, 3> p;
         for(auto& x : p)
         {
-          x = r.read<double>("a coordinate");
-          if(!std::isfinite(x)) r.fail("a coordinate is not finite");
+          x = r.number<double>(token("a coordinate"), "a coordinate");
+          const std::string problem = coordinate_problem(x);
+          if(!problem.empty()) r.fail(problem);
         }
         m.points.push_back(p);
-        m.point_references.push_back(r.read<int>("a vertex reference"));
+        m.point_references.push_back(read_int("a vertex reference"));
       }
       vertices_seen = true;
     }
     else if(keyword == "Triangles" || keyword == "Tetrahedra")
     {
-      if(!vertices_seen) r.fail(keyword + " before Vertices");
+      if(!vertices_seen) r.fail(std::string(keyword) + " before Vertices");
       const bool tets = (keyword == "Tetrahedra");
-      const std::size_t n = count(tets ? "number of tetrahedra" : "number of triangles");
+      if(tets ? !m.tetrahedra.empty() : !m.triangles.empty()) r.fail("a second " + std::string(keyword) + " section");
+      const std::size_t n = tets ? count("number of tetrahedra", 5) : count("number of triangles", 4);
+      (tets ? m.tetrahedron_references : m.triangle_references).reserve(n);
+      if(tets) m.tetrahedra.reserve(n); else m.triangles.reserve(n);
       for(std::size_t k = 0; k < n; ++k)
       {
         if(tets)
         {
           std::array<std::size_t, 4> t;
-          for(auto& v : t) v = index(m.points.size());
+          for(auto& v : t) v = index();
           m.tetrahedra.push_back(t);
-          m.tetrahedron_references.push_back(r.read<int>("a tetrahedron reference"));
+          m.tetrahedron_references.push_back(read_int("a tetrahedron reference"));
         }
         else
         {
           std::array<std::size_t, 3> t;
-          for(auto& v : t) v = index(m.points.size());
+          for(auto& v : t) v = index();
           m.triangles.push_back(t);
-          m.triangle_references.push_back(r.read<int>("a triangle reference"));
+          m.triangle_references.push_back(read_int("a triangle reference"));
         }
       }
     }
-    else if(skipped.count(keyword))
+    else if(const std::size_t numbers = skipped_numbers(keyword))
     {
-      const std::size_t n = count("number of entries");
-      for(std::size_t k = 0; k < n * std::size_t(skipped.at(keyword)); ++k) r.read<double>("an entry");
+      const std::size_t n = count("number of entries", numbers);
+      for(std::size_t k = 0; k < n * numbers; ++k) r.number<double>(token("an entry"), "an entry");
     }
     else
-      r.fail("unknown or unsupported section '" + keyword + "'");
+      r.fail("unknown or unsupported section " + quote_token(keyword));
   }
   if(!dimension_seen) r.fail("no Dimension");
   if(!vertices_seen) r.fail("no Vertices");
   return m;
 }
+
+inline Medit_mesh read_medit_file(const std::string& path) { return read_medit_text(path, read_text_file(path)); }
 
 /// Writes a Medit file (17 significant digits: coordinates read back exactly).
 inline void write_medit_file(std::ostream& out, const Medit_mesh& m)

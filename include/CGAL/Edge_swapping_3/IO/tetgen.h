@@ -9,25 +9,16 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IO_TETGEN_H
 #define CGAL_EDGE_SWAPPING_3_IO_TETGEN_H
 
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <array>
-#include <cmath>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
+#include <ostream>
 #include <string>
-#include <type_traits>
+#include <string_view>
 #include <vector>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
 namespace IO {
-
-/// A file that cannot be read as what it claims to be. The message names the
-/// file, the line and the problem.
-struct Input_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
 
 struct Node_file
 {
@@ -38,164 +29,151 @@ struct Node_file
 
 namespace internal {
 
-// Reads a number from `token`; `fail(message)` must throw. NaN and
-// infinities are named, not reported as garbage.
-template <class T, class Fail>
-T parse_token(const std::string& token, const char* what, const Fail& fail)
-{
-  std::istringstream t(token);
-  T value;
-  if(!(t >> value) || t.rdbuf()->in_avail() != 0)
-  {
-    if constexpr(std::is_floating_point<T>::value)
-    {
-      const double d = std::strtod(token.c_str(), nullptr);
-      if(std::isnan(d) || std::isinf(d)) fail(std::string(what) + " is not finite: " + token);
-    }
-    fail(std::string("cannot read ") + what + " from '" + token + "'");
-  }
-  return value;
-}
-
+// TetGen's files are line based: one header line, then one line per entry.
 class Line_reader
 {
 public:
-  explicit Line_reader(const std::string& path) : path_(path), in_(path)
-  {
-    if(!in_) throw Input_error(path + ": cannot open the file");
-  }
+  Line_reader(const std::string& name, std::string_view text) : scan_(name, text) {}
 
-  /// The next line with content, comments removed; false at the end.
-  bool next(std::istringstream& line)
-  {
-    std::string s;
-    while(std::getline(in_, s))
-    {
-      ++number_;
-      const auto hash = s.find('#');
-      if(hash != std::string::npos) s.erase(hash);
-      if(s.find_first_not_of(" \t\r") == std::string::npos) continue;
-      line.clear();
-      line.str(s);
-      return true;
-    }
-    return false;
-  }
-
-  [[noreturn]] void fail(const std::string& what) const
-  {
-    throw Input_error(path_ + ":" + std::to_string(number_) + ": " + what);
-  }
+  bool next_line() { return scan_.next_line(); }
 
   template <class T>
-  T read(std::istringstream& line, const char* what)
+  T read(const std::string& what)
   {
-    std::string token;
-    if(!(line >> token)) fail(std::string("missing ") + what);
-    return parse_token<T>(token, what, [this](const std::string& m) { fail(m); });
+    std::string_view token;
+    if(!scan_.next_token_in_line(token)) fail("missing " + what);
+    return scan_.number<T>(token, what);
   }
 
-  static bool more(std::istringstream& line)
+  bool more()
   {
-    line >> std::ws;
-    return !line.eof();
+    std::string_view token;
+    Text_scanner copy = scan_;
+    return copy.next_token_in_line(token);
   }
 
-  void expect_end(std::istringstream& line)
+  void expect_end()
   {
-    std::string extra;
-    if(line >> extra) fail("unexpected '" + extra + "' at the end of the line");
+    std::string_view extra;
+    if(scan_.next_token_in_line(extra)) fail("unexpected " + quote_token(extra) + " at the end of the line");
   }
+
+  /// A header count whose entries each take at least `min_bytes` of the rest.
+  std::size_t count(const std::string& what, std::size_t min_bytes)
+  {
+    std::string_view token;
+    if(!scan_.next_token_in_line(token)) fail("missing " + what);
+    return scan_.count(token, what, min_bytes);
+  }
+
+  /// Fails unless `n` entries of at least `min_bytes` each fit in the rest.
+  void require_room(std::size_t n, const std::string& what, std::size_t min_bytes) const
+  {
+    if(!scan_.has_room(n, min_bytes))
+      fail(what + " is " + std::to_string(n) + ", more than the rest of the file can hold (" +
+           std::to_string(scan_.remaining_bytes()) + " bytes)");
+  }
+
+  [[noreturn]] void fail(const std::string& what) const { scan_.fail(what); }
 
 private:
-  std::string path_;
-  std::ifstream in_;
-  std::size_t number_ = 0;
+  Text_scanner scan_;
 };
 
 } // namespace internal
 
-inline Node_file read_node_file(const std::string& path)
+/// Reads the text of a .node file; `name` is the file name used in messages.
+inline Node_file read_node_text(const std::string& name, std::string_view text)
 {
-  internal::Line_reader r(path);
-  std::istringstream line;
-  if(!r.next(line)) r.fail("empty file: no header line");
-  const long long n = r.read<long long>(line, "the number of points");
-  const int dim = r.read<int>(line, "the dimension");
-  const int n_attr = r.more(line) ? r.read<int>(line, "the number of attributes") : 0;
-  const int n_mark = r.more(line) ? r.read<int>(line, "the number of boundary markers") : 0;
-  r.expect_end(line);
-  if(n < 0) r.fail("negative number of points");
+  internal::Line_reader r(name, text);
+  if(!r.next_line()) r.fail("empty file: no header line");
+  // A point line holds at least an index and three coordinates: 8 bytes.
+  const std::size_t n = r.count("the number of points", 8);
+  const int dim = r.read<int>("the dimension");
+  const int n_attr = r.more() ? r.read<int>("the number of attributes") : 0;
+  const int n_mark = r.more() ? r.read<int>("the number of boundary markers") : 0;
+  r.expect_end();
   if(dim != 3) r.fail("the dimension is " + std::to_string(dim) + ", not 3");
-  if(n_attr < 0 || (n_mark != 0 && n_mark != 1)) r.fail("bad attribute or marker count");
+  if(n_attr < 0 || n_attr > 1000 || (n_mark != 0 && n_mark != 1)) r.fail("bad attribute or marker count");
+  r.require_room(n, "the number of points", 2 * std::size_t(4 + n_attr + n_mark));
 
   Node_file f;
-  f.points.reserve(std::size_t(n));
-  for(long long k = 0; k < n; ++k)
+  f.points.reserve(n);
+  f.attributes.reserve(n);
+  for(std::size_t k = 0; k < n; ++k)
   {
-    if(!r.next(line)) r.fail("the file ends after " + std::to_string(k) + " of " + std::to_string(n) + " points");
-    const long long index = r.read<long long>(line, "the point index");
+    if(!r.next_line()) r.fail("the file ends after " + std::to_string(k) + " of " + std::to_string(n) + " points");
+    const long long index = r.read<long long>("the point index");
     if(k == 0)
     {
       if(index != 0 && index != 1) r.fail("the first point index is " + std::to_string(index) + ", not 0 or 1");
       f.first_index = int(index);
     }
-    else if(index != f.first_index + k)
+    else if(index != f.first_index + (long long)k)
       r.fail("point index " + std::to_string(index) + " out of sequence (expected " +
-             std::to_string(f.first_index + k) + ")");
+             std::to_string(f.first_index + (long long)k) + ")");
     std::array<double, 3> p;
     for(int c = 0; c < 3; ++c)
     {
-      p[c] = r.read<double>(line, "a coordinate");
-      if(!std::isfinite(p[c])) r.fail("a coordinate is not finite");
+      p[c] = r.read<double>("a coordinate");
+      const std::string problem = coordinate_problem(p[c]);
+      if(!problem.empty()) r.fail(problem);
     }
     std::vector<double> attributes(static_cast<std::size_t>(n_attr));
-    for(auto& a : attributes) a = r.read<double>(line, "an attribute");
-    if(n_mark) r.read<double>(line, "the boundary marker");
-    r.expect_end(line);
+    for(auto& a : attributes) a = r.read<double>("an attribute");
+    if(n_mark) r.read<double>("the boundary marker");
+    r.expect_end();
     f.points.push_back(p);
     f.attributes.push_back(std::move(attributes));
   }
-  if(r.next(line)) r.fail("more lines than the " + std::to_string(n) + " points the header announces");
+  if(r.next_line()) r.fail("more lines than the " + std::to_string(n) + " points the header announces");
   return f;
 }
 
-/// Reads the tetrahedra of an .ele file, as 0-based point indices. `number_of_points`
-/// and `first_index` come from the matching .node file.
+inline Node_file read_node_file(const std::string& path) { return read_node_text(path, read_text_file(path)); }
+
+/// Reads the text of an .ele file: tetrahedra as 0-based point indices.
+/// `number_of_points` and `first_index` come from the matching .node file.
 inline std::vector<std::array<std::size_t, 4>>
-read_ele_file(const std::string& path, std::size_t number_of_points, int first_index)
+read_ele_text(const std::string& name, std::string_view text, std::size_t number_of_points, int first_index)
 {
-  internal::Line_reader r(path);
-  std::istringstream line;
-  if(!r.next(line)) r.fail("empty file: no header line");
-  const long long n = r.read<long long>(line, "the number of tetrahedra");
-  const int per = r.more(line) ? r.read<int>(line, "the number of nodes per tetrahedron") : 4;
-  const int n_attr = r.more(line) ? r.read<int>(line, "the number of attributes") : 0;
-  r.expect_end(line);
-  if(n < 0) r.fail("negative number of tetrahedra");
+  internal::Line_reader r(name, text);
+  if(!r.next_line()) r.fail("empty file: no header line");
+  // A tetrahedron line holds at least five numbers: 10 bytes.
+  const std::size_t n = r.count("the number of tetrahedra", 10);
+  const int per = r.more() ? r.read<int>("the number of nodes per tetrahedron") : 4;
+  const int n_attr = r.more() ? r.read<int>("the number of attributes") : 0;
+  r.expect_end();
   if(per != 4) r.fail("only linear tetrahedra (4 nodes) are supported, not " + std::to_string(per));
-  if(n_attr < 0) r.fail("negative number of attributes");
+  if(n_attr < 0 || n_attr > 1000) r.fail("bad number of attributes");
+  r.require_room(n, "the number of tetrahedra", 2 * std::size_t(5 + n_attr));
 
   std::vector<std::array<std::size_t, 4>> cells;
-  cells.reserve(std::size_t(n));
-  for(long long k = 0; k < n; ++k)
+  cells.reserve(n);
+  for(std::size_t k = 0; k < n; ++k)
   {
-    if(!r.next(line)) r.fail("the file ends after " + std::to_string(k) + " of " + std::to_string(n) + " tetrahedra");
-    r.read<long long>(line, "the tetrahedron index");
+    if(!r.next_line()) r.fail("the file ends after " + std::to_string(k) + " of " + std::to_string(n) + " tetrahedra");
+    r.read<long long>("the tetrahedron index");
     std::array<std::size_t, 4> t;
     for(auto& v : t)
     {
-      const long long i = r.read<long long>(line, "a node index");
-      if(i < first_index || i >= first_index + (long long)number_of_points)
+      const long long i = r.read<long long>("a node index");
+      if(i < first_index || i - first_index >= (long long)number_of_points)
         r.fail("node index " + std::to_string(i) + " is not a point of the .node file");
       v = std::size_t(i - first_index);
     }
-    for(int a = 0; a < n_attr; ++a) r.read<double>(line, "an attribute");
-    r.expect_end(line);
+    for(int a = 0; a < n_attr; ++a) r.read<double>("an attribute");
+    r.expect_end();
     cells.push_back(t);
   }
-  if(r.next(line)) r.fail("more lines than the " + std::to_string(n) + " tetrahedra the header announces");
+  if(r.next_line()) r.fail("more lines than the " + std::to_string(n) + " tetrahedra the header announces");
   return cells;
+}
+
+inline std::vector<std::array<std::size_t, 4>>
+read_ele_file(const std::string& path, std::size_t number_of_points, int first_index)
+{
+  return read_ele_text(path, read_text_file(path), number_of_points, first_index);
 }
 
 /// Writes a .node file (17 significant digits: coordinates read back exactly).

@@ -6,8 +6,11 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IO_TOPCOM_H
 #define CGAL_EDGE_SWAPPING_3_IO_TOPCOM_H
 
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <CGAL/number_utils.h>
+#include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <istream>
@@ -56,7 +59,7 @@ inline std::vector<std::vector<std::array<std::size_t, 4>>> read_topcom_triangul
     const auto assign = line.find(":=");
     if(line.rfind("T[", 0) != 0 || assign == std::string::npos) continue;
     auto fail = [&](const std::string& what) {
-      throw std::runtime_error("TOPCOM output line " + std::to_string(line_number) + ": " + what);
+      throw Input_error("TOPCOM output line " + std::to_string(line_number) + ": " + what);
     };
     std::vector<std::array<std::size_t, 4>> cells;
     std::size_t pos = line.find('{', assign);
@@ -76,13 +79,15 @@ inline std::vector<std::vector<std::array<std::size_t, 4>>> read_topcom_triangul
       {
         k = line.find_first_not_of(" ,", k);
         if(k >= close) break;
-        std::size_t used = 0;
-        unsigned long value = 0;
-        try { value = std::stoul(line.substr(k, close - k), &used); }
-        catch(const std::exception&) { fail("bad index at column " + std::to_string(k + 1)); }
+        // A point index: digits only (no sign), in range of std::size_t.
+        const std::size_t stop = std::min(close, line.find_first_of(" ,", k));
+        std::size_t value = 0;
+        const auto [ptr, ec] = std::from_chars(line.data() + k, line.data() + stop, value);
+        if(ec != std::errc() || ptr != line.data() + stop || line[k] == '-' || line[k] == '+')
+          fail("bad index at column " + std::to_string(k + 1));
         if(count == 4) fail("a simplex with more than four points");
         cell[count++] = value;
-        k += used;
+        k = stop;
       }
       if(count != 4) fail("a simplex with " + std::to_string(count) + " points");
       cells.push_back(cell);

@@ -4,12 +4,12 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IO_VTU_H
 #define CGAL_EDGE_SWAPPING_3_IO_VTU_H
 
-#include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <ostream>
-#include <sstream>
+#include <string_view>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,98 +60,224 @@ struct Vtu_mesh
   Named_fields point_fields, cell_fields;
 };
 
-/// Reads the ASCII .vtu files that `write_vtu_file` writes (tetrahedra only,
-/// ASCII data arrays); anything else is an Input_error naming the problem.
-inline Vtu_mesh read_vtu_file(const std::string& path)
-{
-  std::ifstream in(path);
-  if(!in) throw Input_error(path + ": cannot open the file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  auto fail = [&](const std::string& what) -> void { throw Input_error(path + ": " + what); };
-  auto attribute = [&](const std::string& tag, const std::string& name) {
-    const std::string key = name + "=\"";
-    const auto at = tag.find(key);
-    if(at == std::string::npos) return std::string();
-    const auto end = tag.find('"', at + key.size());
-    return tag.substr(at + key.size(), end - at - key.size());
-  };
-  if(text.find("<VTKFile") == std::string::npos || text.find("UnstructuredGrid") == std::string::npos)
-    fail("not a VTK unstructured grid (.vtu) file");
-  const auto piece = text.find("<Piece");
-  if(piece == std::string::npos) fail("no <Piece>");
-  const std::string piece_tag = text.substr(piece, text.find('>', piece) - piece);
-  long long n_points = -1, n_cells = -1;
-  try { n_points = std::stoll(attribute(piece_tag, "NumberOfPoints")); n_cells = std::stoll(attribute(piece_tag, "NumberOfCells")); }
-  catch(const std::exception&) { fail("<Piece> without NumberOfPoints and NumberOfCells"); }
-  if(n_points < 0 || n_cells < 0) fail("negative NumberOfPoints or NumberOfCells");
+namespace internal {
 
-  Vtu_mesh m;
-  std::vector<double> connectivity, offsets, types, coordinates;
-  for(std::size_t at = text.find("<DataArray", piece); at != std::string::npos; at = text.find("<DataArray", at + 1))
+// The attributes of an XML start tag, `name="value"` or `name='value'`;
+// `fail(message)` throws.
+template <class Fail>
+class Xml_attributes
+{
+public:
+  Xml_attributes(std::string_view tag, const Fail& fail) : tag_(tag), where_(fail) {}
+
+  /// The value of attribute `key`, or `none` if the tag has no such attribute.
+  std::string_view get(std::string_view key, std::string_view none = std::string_view()) const
   {
-    const auto close = text.find('>', at);
-    const std::string tag = text.substr(at, close - at);
-    if(attribute(tag, "format") != "ascii") fail("data array '" + attribute(tag, "Name") + "' is not ASCII");
-    const auto end = text.find("</DataArray>", close);
-    if(end == std::string::npos) fail("unterminated <DataArray>");
-    std::istringstream numbers(text.substr(close + 1, end - close - 1));
-    std::vector<double> values;
-    std::string token;
-    while(numbers >> token)
+    std::size_t at = tag_.find_first_of(" \t\r\n");
+    while(at != std::string_view::npos && at < tag_.size())
     {
-      char* stop = nullptr;
-      const double d = std::strtod(token.c_str(), &stop);
-      if(*stop != 0) fail("cannot read a number from '" + token + "' in '" + attribute(tag, "Name") + "'");
-      if(!std::isfinite(d)) fail("a value of '" + attribute(tag, "Name") + "' is not finite: " + token);
-      values.push_back(d);
+      at = tag_.find_first_not_of(" \t\r\n/", at);
+      if(at == std::string_view::npos) break;
+      const std::size_t eq = tag_.find('=', at);
+      if(eq == std::string_view::npos) where_("malformed attribute in " + quote_token(tag_));
+      std::string_view name = tag_.substr(at, eq - at);
+      while(!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.remove_suffix(1);
+      const std::size_t open = tag_.find_first_not_of(" \t\r\n", eq + 1);
+      if(open == std::string_view::npos || (tag_[open] != '"' && tag_[open] != '\''))
+        where_("attribute " + quote_token(name) + " without a quoted value");
+      const std::size_t close = tag_.find(tag_[open], open + 1);
+      if(close == std::string_view::npos) where_("attribute " + quote_token(name) + " with an unterminated value");
+      if(name == key) return tag_.substr(open + 1, close - open - 1);
+      at = close + 1;
     }
-    // Which section holds this array: the last section tag opened before it.
-    const auto section = [&](const char* s) { const auto p = text.rfind(s, at); return p == std::string::npos ? 0 : p + 1; };
-    const std::size_t in_points = section("<Points>"), in_cells = section("<Cells>"),
-                      in_pdata = section("<PointData"), in_cdata = section("<CellData");
-    const std::size_t latest = (std::max)((std::max)(in_points, in_cells), (std::max)(in_pdata, in_cdata));
-    const std::string name = attribute(tag, "Name");
-    if(latest == 0) fail("data array '" + name + "' outside Points, Cells, PointData and CellData");
-    if(latest == in_points) coordinates = values;
-    else if(latest == in_cells)
+    return none;
+  }
+
+private:
+  std::string_view tag_;
+  const Fail& where_;
+};
+
+} // namespace internal
+
+/// Reads the text of an ASCII .vtu file (tetrahedra only, ASCII data arrays,
+/// one Piece); anything else is an Input_error naming the file, the line and
+/// the problem. One pass over the text: linear in its size.
+inline Vtu_mesh read_vtu_text(const std::string& name, std::string_view text)
+{
+  std::size_t line = 1, counted_to = 0;
+  auto fail_at = [&](std::size_t pos, const std::string& what) {
+    for(; counted_to < pos && counted_to < text.size(); ++counted_to) line += text[counted_to] == '\n';
+    throw Input_error(name + ":" + std::to_string(line) + ": " + what);
+  };
+
+  enum Section { NONE, POINTS, CELLS, POINT_DATA, CELL_DATA };
+  Section section = NONE;
+  bool vtk_file = false, piece_seen = false, piece_open = false;
+  std::size_t n_points = 0, n_cells = 0;
+  std::vector<double> connectivity, offsets, types, coordinates;
+  bool have_connectivity = false, have_offsets = false, have_types = false, have_points = false;
+  Vtu_mesh m;
+  auto field_name_ok = [](std::string_view s) {
+    if(s.empty() || s.size() > 256) return false;
+    for(char ch : s)
+      if(ch < 32 || ch >= 127 || ch == '<' || ch == '>' || ch == '&' || ch == '"' || ch == '\'') return false;
+    return true;
+  };
+
+  std::size_t pos = 0;
+  while((pos = text.find('<', pos)) != std::string_view::npos)
+  {
+    if(text.compare(pos, 4, "<!--") == 0)
     {
-      if(name == "connectivity") connectivity = values;
-      else if(name == "offsets") offsets = values;
-      else if(name == "types") types = values;
+      const std::size_t end = text.find("-->", pos + 4);
+      if(end == std::string_view::npos) fail_at(pos, "unterminated comment");
+      pos = end + 3;
+      continue;
     }
-    else if(latest == in_pdata)
+    const std::size_t close = text.find('>', pos);
+    if(close == std::string_view::npos) fail_at(pos, "unterminated tag");
+    const std::string_view tag = text.substr(pos + 1, close - pos - 1);
+    const std::size_t tag_start = pos;
+    pos = close + 1;
+    if(!tag.empty() && (tag[0] == '?' || tag[0] == '!')) continue; // declaration
+    const bool closing = !tag.empty() && tag[0] == '/';
+    const std::string_view body = closing ? tag.substr(1) : tag;
+    const std::string_view element = body.substr(0, body.find_first_of(" \t\r\n/"));
+    auto fail = [&](const std::string& what) { fail_at(tag_start, what); };
+    const internal::Xml_attributes<decltype(fail)> attributes(tag, fail);
+
+    if(element == "VTKFile")
     {
-      if(values.size() != std::size_t(n_points)) fail("point field '" + name + "' has " + std::to_string(values.size()) + " values, not " + std::to_string(n_points));
-      m.point_fields.emplace_back(name, values);
+      if(closing) continue;
+      if(attributes.get("type") != "UnstructuredGrid") fail("not a VTK unstructured grid (.vtu) file");
+      vtk_file = true;
     }
-    else
+    else if(element == "Piece")
     {
-      if(values.size() != std::size_t(n_cells)) fail("cell field '" + name + "' has " + std::to_string(values.size()) + " values, not " + std::to_string(n_cells));
-      m.cell_fields.emplace_back(name, values);
+      if(closing) { piece_open = false; continue; }
+      if(!vtk_file) fail("<Piece> outside <VTKFile type=\"UnstructuredGrid\">");
+      if(piece_seen) fail("more than one <Piece> (only one is supported)");
+      piece_seen = piece_open = true;
+      long long np = -1, nc = -1;
+      if(internal::parse_number(attributes.get("NumberOfPoints"), np) != internal::Number_status::ok ||
+         internal::parse_number(attributes.get("NumberOfCells"), nc) != internal::Number_status::ok || np < 0 || nc < 0)
+        fail("<Piece> without a whole NumberOfPoints and NumberOfCells");
+      // Each point takes at least 6 bytes (3 numbers), each cell 12 (6 numbers).
+      if(std::size_t(np) > text.size() / 6 || std::size_t(nc) > text.size() / 12)
+        fail("NumberOfPoints " + std::to_string(np) + " and NumberOfCells " + std::to_string(nc) +
+             " are more than the file can hold (" + std::to_string(text.size()) + " bytes)");
+      n_points = std::size_t(np);
+      n_cells = std::size_t(nc);
+    }
+    else if(element == "Points" || element == "Cells" || element == "PointData" || element == "CellData")
+    {
+      if(closing) { section = NONE; continue; }
+      if(!piece_open) fail("<" + std::string(element) + "> outside <Piece>");
+      if(section != NONE) fail("<" + std::string(element) + "> inside another section");
+      section = element == "Points" ? POINTS : element == "Cells" ? CELLS : element == "PointData" ? POINT_DATA : CELL_DATA;
+      if(!body.empty() && body.back() == '/') section = NONE; // an empty section: <PointData/>
+    }
+    else if(element == "DataArray")
+    {
+      if(closing) fail("</DataArray> without <DataArray>");
+      const std::string array_name(attributes.get("Name"));
+      if(section == NONE) fail("data array " + quote_token(array_name) + " outside Points, Cells, PointData and CellData");
+      if(attributes.get("format") != "ascii") fail("data array " + quote_token(array_name) + " is not ASCII");
+      const std::string_view components = attributes.get("NumberOfComponents", section == POINTS ? "3" : "1");
+      if(components != (section == POINTS ? "3" : "1"))
+        fail("data array " + quote_token(array_name) + " has NumberOfComponents " + quote_token(components));
+      // How many values it must hold, and where they go.
+      std::vector<double>* values = nullptr;
+      std::vector<double> field;
+      std::size_t expected = 0;
+      if(section == POINTS)
+      {
+        if(have_points) fail("a second data array in <Points>");
+        have_points = true;
+        values = &coordinates;
+        expected = 3 * n_points;
+      }
+      else if(section == CELLS)
+      {
+        bool* have = array_name == "connectivity" ? &have_connectivity : array_name == "offsets" ? &have_offsets
+                     : array_name == "types" ? &have_types : nullptr;
+        if(have == nullptr) fail("unknown cell array " + quote_token(array_name));
+        if(*have) fail("a second " + quote_token(array_name) + " array");
+        *have = true;
+        values = array_name == "connectivity" ? &connectivity : array_name == "offsets" ? &offsets : &types;
+        expected = array_name == "connectivity" ? 4 * n_cells : n_cells;
+      }
+      else
+      {
+        if(!field_name_ok(array_name)) fail("field name " + quote_token(array_name) + " is empty, too long or has characters that are not supported");
+        const Named_fields& fields = section == POINT_DATA ? m.point_fields : m.cell_fields;
+        for(const auto& f : fields)
+          if(f.first == array_name) fail("two fields named " + quote_token(array_name));
+        values = &field;
+        expected = section == POINT_DATA ? n_points : n_cells;
+      }
+      values->reserve(expected);
+      // The numbers up to the closing tag.
+      const std::size_t end = text.find('<', pos);
+      if(end == std::string_view::npos || text.compare(end, 12, "</DataArray>") != 0)
+        fail("data array " + quote_token(array_name) + " is not closed by </DataArray>");
+      for(std::size_t at = pos;;)
+      {
+        at = text.find_first_not_of(" \t\r\n", at);
+        if(at >= end) break;
+        const std::size_t stop = std::min(end, text.find_first_of(" \t\r\n", at));
+        const std::string_view token = text.substr(at, stop - at);
+        at = stop;
+        if(values->size() == expected)
+          fail("data array " + quote_token(array_name) + " has more than " + std::to_string(expected) + " values");
+        double d = 0;
+        const auto status = internal::parse_number(token, d);
+        if(status != internal::Number_status::ok)
+          fail("cannot read a number from " + quote_token(token) + " in " + quote_token(array_name));
+        if(!std::isfinite(d)) fail("a value of " + quote_token(array_name) + " is not finite: " + quote_token(token));
+        if(section == POINTS)
+        {
+          const std::string problem = coordinate_problem(d);
+          if(!problem.empty()) fail(problem);
+        }
+        values->push_back(d);
+      }
+      if(values->size() != expected)
+        fail("data array " + quote_token(array_name) + " has " + std::to_string(values->size()) + " values, not " +
+             std::to_string(expected));
+      if(section == POINT_DATA) m.point_fields.emplace_back(array_name, std::move(field));
+      if(section == CELL_DATA) m.cell_fields.emplace_back(array_name, std::move(field));
+      pos = end + 12;
     }
   }
-  if(coordinates.size() != 3 * std::size_t(n_points)) fail("the points do not have 3 coordinates each");
-  if(connectivity.size() != 4 * std::size_t(n_cells) || offsets.size() != std::size_t(n_cells) ||
-     types.size() != std::size_t(n_cells))
-    fail("the cells are not all tetrahedra (4 points each, VTK type 10)");
-  for(std::size_t k = 0; k < std::size_t(n_points); ++k)
+  if(!vtk_file) fail_at(0, "not a VTK unstructured grid (.vtu) file");
+  if(!piece_seen) fail_at(text.size(), "no <Piece>");
+  if(!have_points && n_points > 0) fail_at(text.size(), "no <Points> data array");
+  if(n_cells > 0 && !(have_connectivity && have_offsets && have_types))
+    fail_at(text.size(), "the cells need connectivity, offsets and types arrays");
+  m.points.reserve(n_points);
+  for(std::size_t k = 0; k < n_points; ++k)
     m.points.push_back({coordinates[3 * k], coordinates[3 * k + 1], coordinates[3 * k + 2]});
-  for(std::size_t k = 0; k < std::size_t(n_cells); ++k)
+  m.tetrahedra.reserve(n_cells);
+  for(std::size_t k = 0; k < n_cells; ++k)
   {
-    if(types[k] != 10 || offsets[k] != double(4 * (k + 1))) fail("cell " + std::to_string(k) + " is not a tetrahedron");
+    if(types[k] != 10 || offsets[k] != double(4 * (k + 1)))
+      fail_at(text.size(), "cell " + std::to_string(k) + " is not a tetrahedron (VTK type 10, 4 points)");
     std::array<std::size_t, 4> t;
     for(int i = 0; i < 4; ++i)
     {
       const double v = connectivity[4 * k + i];
-      if(v < 0 || v >= double(n_points) || v != std::floor(v)) fail("cell " + std::to_string(k) + " names a point that does not exist");
+      if(!(v >= 0 && v < double(n_points)) || v != std::floor(v))
+        fail_at(text.size(), "cell " + std::to_string(k) + " names a point that does not exist");
       t[i] = std::size_t(v);
     }
     m.tetrahedra.push_back(t);
   }
   return m;
 }
+
+inline Vtu_mesh read_vtu_file(const std::string& path) { return read_vtu_text(path, read_text_file(path)); }
 
 } // namespace IO
 } // namespace Edge_swapping_3
