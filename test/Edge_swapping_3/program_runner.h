@@ -46,9 +46,13 @@ public:
     return s.str();
   }
 
-  Run run(const std::string& args) const
+  Run run(const std::string& args) const { return run_with("", args); }
+
+  /// Runs the program after the shell commands `prefix` (limits, traps).
+  Run run_with(const std::string& prefix, const std::string& args) const
   {
-    const std::string cmd = std::string(EDGE_SWAP_BINARY) + " " + args + " > " + path("stdout") + " 2> " + path("stderr");
+    const std::string cmd = "(" + prefix + " " + std::string(EDGE_SWAP_BINARY) + " " + args + ") > " + path("stdout") +
+                            " 2> " + path("stderr");
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
   }

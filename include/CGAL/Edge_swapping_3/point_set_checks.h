@@ -9,7 +9,7 @@
 #include <CGAL/number_utils.h>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <charconv>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -34,10 +34,10 @@ inline std::string coordinate_problem(double x)
   const double a = std::abs(x);
   if(a > max_coordinate || (a != 0 && a < min_nonzero_coordinate))
   {
-    char buffer[160];
-    std::snprintf(buffer, sizeof buffer,
-                  "the coordinate %.17g is outside the supported range (0, or 1e-30 to 1e30 in magnitude)", x);
-    return buffer;
+    char shortest[32]; // the shortest text that reads back as x
+    const auto end = std::to_chars(shortest, shortest + sizeof shortest, x).ptr;
+    return "the coordinate " + std::string(shortest, end) +
+           " is outside the supported range (0, or 1e-30 to 1e30 in magnitude)";
   }
   return std::string();
 }

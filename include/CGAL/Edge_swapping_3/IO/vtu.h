@@ -11,6 +11,7 @@
 #include <ostream>
 #include <string_view>
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -118,6 +119,7 @@ inline Vtu_mesh read_vtu_text(const std::string& name, std::string_view text)
   std::vector<double> connectivity, offsets, types, coordinates;
   bool have_connectivity = false, have_offsets = false, have_types = false, have_points = false;
   Vtu_mesh m;
+  std::unordered_set<std::string> point_names, cell_names;
   auto field_name_ok = [](std::string_view s) {
     if(s.empty() || s.size() > 256) return false;
     for(char ch : s)
@@ -211,9 +213,8 @@ inline Vtu_mesh read_vtu_text(const std::string& name, std::string_view text)
       else
       {
         if(!field_name_ok(array_name)) fail("field name " + quote_token(array_name) + " is empty, too long or has characters that are not supported");
-        const Named_fields& fields = section == POINT_DATA ? m.point_fields : m.cell_fields;
-        for(const auto& f : fields)
-          if(f.first == array_name) fail("two fields named " + quote_token(array_name));
+        if(!(section == POINT_DATA ? point_names : cell_names).insert(array_name).second)
+          fail("two fields named " + quote_token(array_name));
         values = &field;
         expected = section == POINT_DATA ? n_points : n_cells;
       }

@@ -1,0 +1,367 @@
+// Hostile input: each defect found by fuzzing and fault injection, as a case
+// that failed before. Bad input means exit 2, a message that names the file,
+// the line or the option and the problem, and no output file.
+
+#include "test_common.h"
+#include "program_runner.h"
+#include "experiment_case.h"
+#include "experiment_summary.h"
+#include "output_files.h"
+#include <CGAL/Edge_swapping_3/IO/medit.h>
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <CGAL/Edge_swapping_3/IO/vtu.h>
+#include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
+#include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <fstream>
+#include <sstream>
+
+using namespace test;
+namespace IO = CGAL::Edge_swapping_3::IO;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string cube_node = "8 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 1 1 0\n5 0 0 1\n6 1 0 1\n7 0 1 1\n8 1 1 1\n";
+const std::string tet_mesh = "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n"
+                             "Tetrahedra\n1\n1 2 3 4 1\nEnd\n";
+
+std::string vtu(const std::string& piece, const std::string& body)
+{
+  return "<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece " + piece + ">" + body +
+         "</Piece></UnstructuredGrid></VTKFile>\n";
+}
+
+// A .vtu of one tetrahedron with a cell field "subdomain" of value `subdomain`.
+std::string tet_vtu(const std::string& subdomain)
+{
+  return vtu("NumberOfPoints=\"4\" NumberOfCells=\"1\"",
+             "<CellData><DataArray type=\"Float64\" Name=\"subdomain\" format=\"ascii\">" + subdomain +
+                 "</DataArray></CellData><Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+                 "0 0 0 1 0 0 0 1 0 0 0 1</DataArray></Points><Cells>"
+                 "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
+                 "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>"
+                 "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells>");
+}
+
+// Runs `args` and expects exit 2, `what` in the message, and no file but `inputs`.
+void expect_rejected(const Workdir& w, const std::string& args, const std::string& what,
+                     const std::vector<std::string>& inputs)
+{
+  const Run r = w.run(args);
+  INFO("edge_swap " << args << "\nstderr: " << r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find(what) != std::string::npos);
+  REQUIRE(w.outputs(inputs) == 0);
+}
+
+std::string case_text(const std::string& extra)
+{
+  return "{\"points\": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]], \"strategy\": \"plain\", \"order\": \"random\", "
+         "\"seed\": 1" + extra + "}";
+}
+
+} // namespace
+
+TEST_CASE("Defect 1: cell indices out of range are errors wherever cells come from", "[hostile]")
+{
+  const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(1, 1, 1)};
+  std::vector<Tr::Vertex_handle> vertices;
+  Tr tr;
+  REQUIRE(ES::build_triangulation_from_cells(tr, p, {{0, 1, 2, 3}, {1, 2, 3, 99}}, vertices) ==
+          "tetrahedron 1 names point 99, but there are only 5 points");
+  REQUIRE(ES::build_triangulation_from_cells(tr, p, {{0, 1, 2, std::size_t(-1)}}, vertices) ==
+          "tetrahedron 0 names point 18446744073709551615, but there are only 5 points");
+  REQUIRE(ES::build_triangulation_from_cells(tr, p, {{0, 1, 1, 3}}, vertices) == "tetrahedron 0 names point 1 twice");
+  REQUIRE(tr.number_of_vertices() == 0);
+
+  // From case files (replay and shrink): -1, a point that does not exist, not four.
+  Workdir w;
+  for(const std::string cells : {"[[0,1,2,3],[1,2,3,-1]]", "[[0,1,2,3],[1,2,3,5]]", "[[0,1,2]]", "[[0,1,2,\"3\"]]", "7"})
+  {
+    w.write("case.json", case_text(", \"start\": \"cells\", \"cells\": " + cells));
+    expect_rejected(w, "replay " + w.path("case.json"), "case.json: bad case file: ", {"case.json"});
+    expect_rejected(w, "shrink " + w.path("case.json") + " -o " + w.path("s.json"), "case.json: bad case file: ",
+                    {"case.json"});
+  }
+
+  // From TOPCOM's output: a sign or a number too large is not an index.
+  for(const std::string bad : {"T[0] := {{0,1,2,-1}};", "T[0] := {{0,1,2,+3}};", "T[0] := {{0,1,2,99999999999999999999999}};"})
+  {
+    INFO(bad);
+    std::istringstream in(bad + "\n");
+    REQUIRE_THROWS_WITH(IO::read_topcom_triangulations(in), Catch::Contains("TOPCOM output line 1: bad index"));
+  }
+}
+
+TEST_CASE("Defect 2: a count the file cannot back is an error - not an allocation", "[hostile]")
+{
+  auto rejects = [](auto read, const std::string& text, const std::string& what) {
+    INFO(text.substr(0, 200));
+    REQUIRE_THROWS_WITH(read(text), Catch::Contains("x:") && Catch::Contains(what));
+  };
+  auto node = [](const std::string& t) { return IO::read_node_text("x", t); };
+  auto ele = [](const std::string& t) { return IO::read_ele_text("x", t, 8, 1); };
+  auto medit = [](const std::string& t) { return IO::read_medit_text("x", t); };
+  auto vtu_file = [](const std::string& t) { return IO::read_vtu_text("x", t); };
+  rejects(node, "1000000000000000000 3 0 0\n1 0 0 0\n", "more than the rest of the file can hold");
+  rejects(node, "99999999999999999999 3 0 0\n", "out of range");
+  rejects(node, "2 3 900 0\n1 0 0 0\n2 0 0 0\n", "more than the rest of the file can hold"); // attributes count too
+  rejects(ele, "4611686018427387904 4 0\n1 1 2 3 4\n", "more than the rest of the file can hold");
+  rejects(medit, "MeshVersionFormatted 1\nDimension 3\nVertices\n6148914691236517206\n0 0 0 1\n", "more than the rest");
+  // 3 * NumberOfPoints wraps to 2 in 64 bits.
+  rejects(vtu_file, vtu("NumberOfPoints=\"6148914691236517206\" NumberOfCells=\"0\"", ""), "more than the file can hold");
+  rejects(vtu_file, vtu("NumberOfPoints=\"4\" NumberOfCells=\"4611686018427387904\"", ""), "more than the file can hold");
+  rejects(vtu_file, vtu("NumberOfPoints=\"-4\" NumberOfCells=\"0\"", ""), "without a whole NumberOfPoints");
+  // An array with more values than the piece announces stops at the first extra one.
+  rejects(vtu_file, vtu("NumberOfPoints=\"1\" NumberOfCells=\"0\"", "<Points><DataArray format=\"ascii\">0 0 0 1</DataArray></Points>"),
+          "has more than 3 values");
+}
+
+TEST_CASE("Defect 3: reading a .vtu is linear: 100,000 data arrays", "[hostile]")
+{
+  // The old reader searched back through the whole text for each array: 20,000
+  // arrays took over a minute. This file has 100,000 (a hang guard, not a timing).
+  std::string body = "<PointData>";
+  for(int k = 0; k < 100000; ++k) body += "<DataArray Name=\"f" + std::to_string(k) + "\" format=\"ascii\"></DataArray>";
+  body += "</PointData>";
+  const auto m = IO::read_vtu_text("x.vtu", vtu("NumberOfPoints=\"0\" NumberOfCells=\"0\"", body));
+  REQUIRE(m.point_fields.size() == 100000);
+  REQUIRE_THROWS_WITH(IO::read_vtu_text("x.vtu", vtu("NumberOfPoints=\"0\" NumberOfCells=\"0\"", body + body)),
+                      Catch::Contains("two fields named 'f0'"));
+}
+
+TEST_CASE("Defect 4: a results file is checked, line by line, before anything is appended", "[hostile]")
+{
+  Workdir w;
+  const std::string args = "experiment --families random-cube --sizes 8 --seeds 1 -o " + w.path("r.jsonl");
+  REQUIRE(w.run(args).exit_code == 0);
+  const std::string good = Workdir::slurp(w.path("r.jsonl"));
+  auto first_line = nlohmann::json::parse(good.substr(0, good.find('\n')));
+  REQUIRE(edge_swap::results_line_problem(first_line).empty());
+  auto without = first_line;
+  without.erase("start");
+  auto wrong = first_line;
+  wrong["cycles"] = "many";
+  auto negative = first_line;
+  negative["seed"] = -1;
+  for(const auto& [line, what] : std::vector<std::pair<std::string, std::string>>{
+          {without.dump(), "r.jsonl:2: not a results line: \"start\" is missing or not a string"},
+          {wrong.dump(), "r.jsonl:2: not a results line: \"cycles\" is missing or not a number"},
+          {negative.dump(), "r.jsonl:2: not a results line: \"seed\" is missing or not a whole number"},
+          {"[1, 2]", "r.jsonl:2: not a results line: not a JSON object"},
+          {"{\"key\": ", "r.jsonl:2: not a JSON line"}})
+  {
+    const std::string text = good.substr(0, good.find('\n') + 1) + line + "\n";
+    w.write("r.jsonl", text);
+    const Run r = w.run(args.substr(0, args.find("--seeds")) + "--seeds 1-2 -o " + w.path("r.jsonl"));
+    INFO(line << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find(what) != std::string::npos);
+    REQUIRE(Workdir::slurp(w.path("r.jsonl")) == text); // nothing appended, nothing cut
+  }
+}
+
+TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hostile]")
+{
+  Workdir w;
+  for(const std::string size : {"0", "1", "2", "3"})
+    expect_rejected(w, "experiment --families random-cube --sizes " + size + " -o " + w.path("r.jsonl"),
+                    "--sizes: " + size + " points; a size is from 4", {});
+  expect_rejected(w, "experiment --sizes 200000000 -o " + w.path("r.jsonl"), "a size is from 4 to 100000000", {});
+  // The same checks in the runner itself, whatever calls it.
+  edge_swap::Experiment_case c;
+  c.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("fewer than four points"));
+  c.points.push_back(Point(1, 1, 0));
+  REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("coplanar"));
+}
+
+TEST_CASE("Defect 6: threads that cannot start are reported - not fatal", "[hostile]")
+{
+  // 150 MB of address space leaves room for a few 8 MB thread stacks, not 64.
+  Workdir w;
+  const Run r = w.run_with("ulimit -v 150000;", "experiment --families random-cube --sizes 10 --seeds 1-4 --threads 64 -o " +
+                                                   w.path("s.jsonl"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.err.find("threads could start") != std::string::npos);
+  REQUIRE(r.out.find("8 instances in") != std::string::npos);
+  REQUIRE(Workdir::slurp(w.path("s.jsonl")).size() > 0);
+  expect_rejected(w, "experiment --threads 100000 -o " + w.path("t.jsonl"), "--threads is at most 256", {"s.jsonl"});
+}
+
+TEST_CASE("Defect 7: all outputs appear or none - a folder is not an output file", "[hostile]")
+{
+  Workdir w;
+  w.write("cube.node", cube_node);
+  fs::create_directories(w.path("dir"));
+  const std::vector<std::string> inputs = {"cube.node", "dir"};
+  const std::string in = w.path("cube.node") + " -o " + w.path("y.ele");
+  expect_rejected(w, "optimize " + in + " --stats " + w.path("dir"), "output '" + w.path("dir") + "' is a directory", inputs);
+  expect_rejected(w, "optimize " + in + " --history " + w.path("dir"), "is a directory", inputs);
+  expect_rejected(w, "optimize " + w.path("cube.node") + " -o " + w.path("dir"), "not an .ele", inputs);
+  expect_rejected(w, "optimize " + w.path("cube.node") + " -o " + w.path("no/such/y.ele"), "does not exist", inputs);
+  expect_rejected(w, "optimize " + in + " --stats " + w.path("y.node"), "named twice", inputs);
+  expect_rejected(w, "optimize " + in + " --stats " + w.path("h.csv") + " --history " + w.path("h.csv"), "named twice", inputs);
+  expect_rejected(w, "stats " + w.path("y.ele") + " --json " + w.path("dir"), "is a directory", inputs);
+  expect_rejected(w, "shrink " + w.path("missing.json") + " -o " + w.path("dir"), "is a directory", inputs);
+  expect_rejected(w, "experiment -o " + w.path("dir"), "is a directory", inputs);
+  expect_rejected(w, "mesh-domain two-spheres -o " + w.path("dir/"), "not an .ele", inputs);
+
+  // A rename that fails after another succeeded puts the replaced file back.
+  w.write("a.txt", "old");
+  fs::create_directories(w.path("gone"));
+  edge_swap::Output_files files;
+  files.add(w.path("a.txt"), [](std::ostream& os) { os << "new"; });
+  files.add(w.path("gone/b.txt"), [](std::ostream& os) { os << "new"; });
+  fs::remove(w.path("gone"));
+  REQUIRE_THROWS_WITH(files.commit(), Catch::Contains("cannot write '" + w.path("gone/b.txt") + "'"));
+  REQUIRE(Workdir::slurp(w.path("a.txt")) == "old");
+  REQUIRE(w.outputs({"cube.node", "dir", "a.txt"}) == 0);
+}
+
+TEST_CASE("Defect 8: a full disk is an error - every write and close is checked", "[hostile]")
+{
+  // A file size limit of 512 bytes, with SIGXFSZ ignored: writes fail with EFBIG, as on a full disk.
+  Workdir w;
+  w.write("cube.node", cube_node);
+  const std::string limit = "trap '' XFSZ; ulimit -f 1;";
+  Run r = w.run_with(limit, "experiment --families random-cube --sizes 10 --seeds 1-100 -o " + w.path("full.jsonl"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("cannot write '" + w.path("full.jsonl") + "': File too large") != std::string::npos);
+  // Every whole line that was written is a result; a cut last line is dropped on resume.
+  REQUIRE(edge_swap::read_results_file(w.path("full.jsonl"), false).size() >= 1);
+
+  r = w.run_with(limit, "mesh-domain two-spheres -o " + w.path("big.vtu"));
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("cannot write '" + w.path("big.vtu") + "'") != std::string::npos);
+  REQUIRE(!fs::exists(w.path("big.vtu")));
+  REQUIRE(w.outputs({"cube.node", "full.jsonl"}) == 0); // no partial file left
+}
+
+TEST_CASE("Defect 9: coordinates outside the supported range are rejected and no output holds nan or inf", "[hostile]")
+{
+  Workdir w;
+  for(const std::string x : {"1e307", "-1.5e30", "1e-31", "1e-320", "1e400", "1e-400"})
+  {
+    w.write("p.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 " + x + " 0\n4 0 0 1\n");
+    const std::string what = x == "1e400" ? "not finite" : x == "1e-400" ? "too small for a double" : "outside the supported range";
+    expect_rejected(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), "p.node:4: ", {"p.node"});
+    expect_rejected(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), what, {"p.node"});
+  }
+  w.write("m.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1e307 0 0 1\n0 1 0 1\n0 0 1 1\nEnd\n");
+  expect_rejected(w, "stats " + w.path("m.mesh"), "m.mesh:6: the coordinate 1e+307", {"p.node", "m.mesh"});
+  w.write("c.json", "{\"points\": [[0,0,0],[1e307,0,0],[0,1,0],[0,0,1]], \"start\": \"placing\", \"strategy\": \"plain\", "
+                    "\"order\": \"random\", \"seed\": 1}");
+  expect_rejected(w, "replay " + w.path("c.json"), "point 1: the coordinate 1e+307", {"p.node", "m.mesh", "c.json"});
+
+  // At both ends of the range, and for tetrahedra too flat for double precision,
+  // every measure is a finite number.
+  for(double s : {1e30, 1e-30, 1.0})
+  {
+    const Point a(0, 0, 0), b(s, 0, 0), c(0, s, 0), d(s * 0.25, s * 0.25, s * 1e-16);
+    INFO("scale " << s);
+    for(double x : ES::dihedral_angles(a, b, c, d)) REQUIRE(std::isfinite(x));
+    REQUIRE(std::isfinite(ES::radius_ratio(a, b, c, d)));
+    REQUIRE(std::isfinite(ES::edge_length_ratio(a, b, c, d)));
+    // Scale invariant: the same corner tetrahedron has the same ratio at every scale.
+    REQUIRE(ES::radius_ratio(a, b, c, Point(0, 0, s)) ==
+            Approx(ES::radius_ratio(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1))));
+  }
+  // A mesh at the top of the range, with a sliver: stats and a .vtu without nan or inf.
+  w.write("big.node", "5 3 0 0\n1 0 0 0\n2 1e30 0 0\n3 0 1e30 0\n4 0 0 1e30\n5 3e29 3e29 1e14\n");
+  REQUIRE(w.run("optimize " + w.path("big.node") + " -o " + w.path("big.vtu")).exit_code == 0);
+  const Run r = w.run("stats " + w.path("big.vtu") + " --json " + w.path("big.json"));
+  REQUIRE(r.exit_code == 0);
+  for(const std::string f : {"big.vtu", "big.json"})
+  {
+    const std::string text = Workdir::slurp(w.path(f)) + r.out;
+    INFO(f);
+    REQUIRE(text.find("nan") == std::string::npos);
+    REQUIRE(text.find("inf") == std::string::npos);
+    REQUIRE(text.find("null") == std::string::npos);
+  }
+}
+
+TEST_CASE("Defect 10: every message names the option or the file", "[hostile]")
+{
+  Workdir w;
+  w.write("cube.node", cube_node);
+  fs::create_directories(w.path("d.node"));
+  fs::create_directories(w.path("d.json"));
+  fs::create_directories(w.path("d.mesh"));
+  w.write("x.json", case_text(", \"start\": \"scramble:x\""));
+  w.write("y.json", case_text(", \"start\": \"scramble:99999999999999999999\""));
+  w.write("t.mesh", tet_mesh);
+  REQUIRE(::mkfifo(w.path("fifo.node").c_str(), 0600) == 0); // reading it would wait forever
+  const std::vector<std::string> inputs = {"cube.node", "d.node", "d.json", "d.mesh", "x.json", "y.json", "t.mesh", "fifo.node"};
+  const std::string out = " -o " + w.path("o.ele");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"optimize " + w.path("cube.node") + out + " --start scramble:99999999999999999999", "--start scramble:K is 99999999999999999999"},
+      {"optimize " + w.path("cube.node") + out + " --start scramble:-3", "--start scramble:K needs a whole number, not '-3'"},
+      {"refine " + w.path("t.mesh") + " --by gradient --field flow-speed --sites 99999999999999999999" + out, "--sites"},
+      {"experiment --starts scramble:1e5 -o " + w.path("r.jsonl"), "--starts scramble:K needs a whole number"},
+      {"experiment --seeds 1-99999999999 -o " + w.path("r.jsonl"), "--seeds is 99999999999"},
+      {"experiment --shard x/2 -o " + w.path("r.jsonl"), "--shard I/N needs a whole number"},
+      {"replay " + w.path("x.json"), "x.json: bad case file: start scramble:K needs a whole number, not 'x'"},
+      {"replay " + w.path("y.json"), "y.json: bad case file: start scramble:K is 99999999999999999999"},
+      {"optimize " + w.path("d.node") + out, "d.node: is a directory"},
+      {"stats " + w.path("d.mesh"), "d.mesh: is a directory"},
+      {"replay " + w.path("d.json"), "d.json: is a directory"},
+      {"shrink " + w.path("d.json") + " -o " + w.path("s.json"), "d.json: is a directory"},
+      {"experiment --points-file " + w.path("d.node") + " -o " + w.path("r.jsonl"), "d.node: is a directory"},
+      {"insert " + w.path("t.mesh") + " --points " + w.path("d.node") + out, "d.node: is a directory"},
+      {"optimize " + w.path("fifo.node") + out, "fifo.node: is not a regular file"},
+      {"mesh-domain two-spheres --size 1e-9 -o " + w.path("o.mesh"), "--size is from 0.05 to 100"}};
+  for(const auto& [args, what] : cases) expect_rejected(w, args, what, inputs);
+}
+
+TEST_CASE("Defect 11: subdomain values and section counts are checked", "[hostile]")
+{
+  Workdir w;
+  for(const std::string v : {"1e300", "2.5", "-3e9"})
+  {
+    w.write("s.vtu", tet_vtu(v));
+    expect_rejected(w, "stats " + w.path("s.vtu"), "s.vtu: cell field 'subdomain': the value of cell 0 is not a whole number",
+                    {"s.vtu"});
+  }
+  w.write("s.vtu", tet_vtu("7"));
+  REQUIRE(w.run("stats " + w.path("s.vtu")).exit_code == 0);
+  // Section counts times entries per section would wrap: rejected before any loop.
+  for(const std::string section : {"Edges", "Corners", "Quadrilaterals", "Tetrahedra", "Triangles"})
+  {
+    w.write("c.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n" + section +
+                          "\n6148914691236517206\n1 2 3\n");
+    expect_rejected(w, "stats " + w.path("c.mesh"), "c.mesh:10: number of", {"s.vtu", "c.mesh"});
+  }
+  // A reference larger than an int is a clear error.
+  w.write("r.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n"
+                    "Tetrahedra\n1\n1 2 3 4 99999999999\nEnd\n");
+  expect_rejected(w, "stats " + w.path("r.mesh"), "r.mesh:11: a tetrahedron reference is out of range", {"s.vtu", "c.mesh", "r.mesh"});
+}
+
+TEST_CASE("Defect 12: partial files are recognisable and stale ones go on the next run", "[hostile]")
+{
+  Workdir w;
+  w.write("cube.node", cube_node);
+  // A process that has ended: its partial files are stale.
+  const pid_t child = ::fork();
+  if(child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  const std::string stale = "y.ele.edge_swap-partial-" + std::to_string(child);
+  const std::string stale_node = "y.node.edge_swap-partial-" + std::to_string(child);
+  const std::string live = "y.ele.edge_swap-partial-" + std::to_string(::getpid()); // this process: not stale
+  const std::string other = "z.ele.edge_swap-partial-" + std::to_string(child);    // another output's
+  for(const auto& f : {stale, stale_node, live, other}) w.write(f, "partial");
+  const Run r = w.run("optimize " + w.path("cube.node") + " -o " + w.path("y.ele"));
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(!fs::exists(w.path(stale)));
+  REQUIRE(!fs::exists(w.path(stale_node)));
+  REQUIRE(fs::exists(w.path(live)));
+  REQUIRE(fs::exists(w.path(other)));
+  REQUIRE(w.outputs({"cube.node", "y.ele", "y.node", live, other}) == 0);
+}
