@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Edge_swapping_3 needs, only those missing.
-# Run as root on Debian 12 (apt-get). Called by the two README commands.
+# Installs the Debian packages Edge_swapping_3 needs, only those missing,
+# and the packages named as arguments (the fuzz and sanitizer scripts add
+# clang). Run as root on Debian 12 (apt-get). Called by the two README commands.
 set -euo pipefail
 
 packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib)
@@ -8,6 +9,7 @@ packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeige
 packages+=(tetgen)
 # The conjecture laboratory enumerates triangulations with TOPCOM (and its tests do).
 packages+=(topcom)
+packages+=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -37,17 +37,10 @@ inline std::string results_line_problem(const nlohmann::json& j)
   return std::string();
 }
 
-/// The lines of the results file at `path`, each checked; a Usage_error names
-/// the file, the line and the problem. A last line without its newline (a run
-/// stopped while writing it) is left out, and with `drop_cut_line` removed
-/// from the file, so that appending starts on a new line. A missing file has
-/// no lines.
-inline std::vector<nlohmann::json> read_results_file(const std::string& path, bool drop_cut_line)
+/// The lines of `text`, the content of the results file `path` (see `read_results_file`).
+inline std::vector<nlohmann::json> read_results_text(const std::string& path, const std::string& text)
 {
   std::vector<nlohmann::json> lines;
-  std::error_code ec;
-  if(!std::filesystem::exists(path, ec)) return lines;
-  const std::string text = CGAL::Edge_swapping_3::IO::read_text_file(path);
   const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
   std::size_t number = 0;
   for(std::size_t begin = 0; begin < complete;)
@@ -61,6 +54,21 @@ inline std::vector<nlohmann::json> read_results_file(const std::string& path, bo
     if(!problem.empty()) throw Usage_error(path + ":" + std::to_string(number) + ": not a results line: " + problem);
     lines.push_back(j);
   }
+  return lines;
+}
+
+/// The lines of the results file at `path`, each checked; a Usage_error names
+/// the file, the line and the problem. A last line without its newline (a run
+/// stopped while writing it) is left out, and with `drop_cut_line` removed
+/// from the file, so that appending starts on a new line. A missing file has
+/// no lines.
+inline std::vector<nlohmann::json> read_results_file(const std::string& path, bool drop_cut_line)
+{
+  std::error_code ec;
+  if(!std::filesystem::exists(path, ec)) return {};
+  const std::string text = CGAL::Edge_swapping_3::IO::read_text_file(path);
+  auto lines = read_results_text(path, text);
+  const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
   if(drop_cut_line && complete != text.size()) std::filesystem::resize_file(path, complete);
   return lines;
 }

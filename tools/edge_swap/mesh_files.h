@@ -60,14 +60,17 @@ struct Input
 /// gradient indicator of such values stay finite.
 constexpr double max_field_value = 1e100;
 
-inline Input read_input(const std::string& path)
+/// The input in `text`, the content of the file `path` (its extension says
+/// the format); for an .ele file, `node_text` is the content of the .node
+/// beside it. Throws IO::Input_error or Usage_error naming the file.
+inline Input input_from_text(const std::string& path, std::string_view text, std::string_view node_text = {})
 {
   Input in;
   std::vector<std::array<double, 3>> coordinates;
   if(ends_with(path, ".node") || ends_with(path, ".ele"))
   {
     const bool ele = ends_with(path, ".ele");
-    IO::Node_file node = IO::read_node_file(ele ? stem(path) + ".node" : path);
+    IO::Node_file node = ele ? IO::read_node_text(stem(path) + ".node", node_text) : IO::read_node_text(path, text);
     coordinates = node.points;
     in.first_index = node.first_index;
     const std::size_t n_attr = node.attributes.empty() ? 0 : node.attributes.front().size();
@@ -79,13 +82,13 @@ inline Input read_input(const std::string& path)
     }
     if(ele)
     {
-      in.cells = IO::read_ele_file(path, coordinates.size(), node.first_index);
+      in.cells = IO::read_ele_text(path, text, coordinates.size(), node.first_index);
       in.is_mesh = true;
     }
   }
   else if(ends_with(path, ".mesh"))
   {
-    IO::Medit_mesh m = IO::read_medit_file(path);
+    IO::Medit_mesh m = IO::read_medit_text(path, text);
     coordinates = m.points;
     in.cells = m.tetrahedra;
     in.cell_references = m.tetrahedron_references;
@@ -96,7 +99,7 @@ inline Input read_input(const std::string& path)
   }
   else if(ends_with(path, ".vtu"))
   {
-    IO::Vtu_mesh m = IO::read_vtu_file(path);
+    IO::Vtu_mesh m = IO::read_vtu_text(path, text);
     coordinates = m.points;
     in.cells = m.tetrahedra;
     in.is_mesh = !in.cells.empty();
@@ -128,6 +131,19 @@ inline Input read_input(const std::string& path)
                               " is larger than 1e100 in magnitude, the largest field value supported");
   for(const auto& p : coordinates) in.points.emplace_back(p[0], p[1], p[2]);
   return in;
+}
+
+/// Reads the input file `path` (and the .node beside an .ele).
+inline Input read_input(const std::string& path)
+{
+  if(!ends_with(path, ".node") && !ends_with(path, ".ele") && !ends_with(path, ".mesh") && !ends_with(path, ".vtu"))
+    throw Usage_error("input '" + path + "' is not a .node, .ele, .mesh or .vtu file");
+  if(ends_with(path, ".ele"))
+  {
+    const std::string node_text = IO::read_text_file(stem(path) + ".node");
+    return input_from_text(path, IO::read_text_file(path), node_text);
+  }
+  return input_from_text(path, IO::read_text_file(path));
 }
 
 /// Throws IO::Input_error unless the points can be triangulated in 3-D.

@@ -15,9 +15,13 @@ namespace edge_swap {
 /// Runs a saved case again and prints its outcome (JSON).
 inline int run_replay(const std::string& path, std::size_t max_cycles)
 {
+  if(max_cycles > 1000000000) throw Usage_error("--max-cycles is at most 1000000000");
   Experiment_case c = read_case_file(path);
   if(max_cycles) c.max_cycles = max_cycles;
-  std::cout << outcome_json(run_case(c)).dump() << '\n';
+  const Experiment_outcome o = run_case(c);
+  // Cells that do not form a triangulation are bad input, not an outcome.
+  if(o.ending.rfind("bad start: ", 0) == 0) throw Usage_error(path + ": bad case file: " + o.ending.substr(11));
+  std::cout << outcome_json(o).dump() << '\n';
   return 0;
 }
 

@@ -1,0 +1,160 @@
+// One harness per reader, shared by the libFuzzer targets and by the
+// mutation test of the suite: read `data` as the file `name`, and when it is
+// accepted, go on as the program does (build and check the mesh, run a small
+// case, summarise results). The outcome is either accepted (a valid mesh or
+// result) or rejected with the error's message. Any other exception, a crash
+// or a hang is a defect.
+
+#ifndef EDGE_SWAPPING_3_FUZZ_READER_HARNESS_H
+#define EDGE_SWAPPING_3_FUZZ_READER_HARNESS_H
+
+#include "experiment_case.h"
+#include "experiment_summary.h"
+#include "mesh_files.h"
+#include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+namespace fuzz {
+
+struct Outcome
+{
+  bool accepted = false;
+  std::string message; ///< the error, when rejected
+};
+
+enum class Reader { node, ele, medit, vtu, topcom, case_json, results };
+
+inline const char* reader_name(Reader r)
+{
+  switch(r)
+  {
+  case Reader::node: return "node";
+  case Reader::ele: return "ele";
+  case Reader::medit: return "medit";
+  case Reader::vtu: return "vtu";
+  case Reader::topcom: return "topcom";
+  case Reader::case_json: return "case_json";
+  default: return "results";
+  }
+}
+
+/// The file name the harness gives `reader`'s input in messages.
+inline std::string file_name(Reader r)
+{
+  switch(r)
+  {
+  case Reader::node: return "fuzz.node";
+  case Reader::ele: return "fuzz.ele";
+  case Reader::medit: return "fuzz.mesh";
+  case Reader::vtu: return "fuzz.vtu";
+  case Reader::topcom: return "TOPCOM output";
+  case Reader::case_json: return "fuzz.json";
+  default: return "fuzz.jsonl";
+  }
+}
+
+namespace internal {
+
+// Builds a mesh input as `edge_swap check` does; the problem is a rejection.
+inline void build_mesh(const std::string& name, const edge_swap::Input& in, Outcome& o)
+{
+  edge_swap::Triangulation tr;
+  const std::string problem = in.is_mesh ? edge_swap::build_mesh(tr, in)
+                                         : CGAL::Edge_swapping_3::point_set_problem(in.points, edge_swap::K());
+  if(!problem.empty()) { o.message = name + ": " + problem; return; }
+  if(in.is_mesh && !tr.is_valid()) throw std::logic_error("a mesh that was accepted is not valid");
+  o.accepted = true;
+}
+
+// The points the TOPCOM harness triangulates: a cube's corners and centre.
+inline std::vector<edge_swap::Point> topcom_points()
+{
+  std::vector<edge_swap::Point> p;
+  for(int k = 0; k < 8; ++k) p.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  p.emplace_back(0.5, 0.5, 0.5);
+  return p;
+}
+
+} // namespace internal
+
+/// Runs `reader` on `data`. For `Reader::ele`, the data is the text of the
+/// .node, a NUL byte, and the text of the .ele (no NUL: the .node is empty).
+inline Outcome run(Reader reader, std::string_view data)
+{
+  Outcome o;
+  const std::string name = file_name(reader);
+  try
+  {
+    switch(reader)
+    {
+    case Reader::node:
+    case Reader::medit:
+    case Reader::vtu:
+      internal::build_mesh(name, edge_swap::input_from_text(name, data), o);
+      break;
+    case Reader::ele:
+    {
+      const std::size_t nul = data.find('\0');
+      const std::string_view node = nul == std::string_view::npos ? std::string_view() : data.substr(0, nul);
+      const std::string_view ele = nul == std::string_view::npos ? data : data.substr(nul + 1);
+      internal::build_mesh(name, edge_swap::input_from_text(name, ele, node), o);
+      break;
+    }
+    case Reader::topcom:
+    {
+      std::istringstream in{std::string(data)};
+      const auto points = internal::topcom_points();
+      for(const auto& cells : CGAL::Edge_swapping_3::IO::read_topcom_triangulations(in))
+      {
+        edge_swap::Plain_triangulation tr;
+        std::vector<edge_swap::Plain_triangulation::Vertex_handle> vertices;
+        o.message = CGAL::Edge_swapping_3::build_triangulation_from_cells(tr, points, edge_swap::oriented_cells(points, cells),
+                                                                          vertices);
+        if(!o.message.empty()) { o.message = name + ": " + o.message; return o; }
+      }
+      o.accepted = true;
+      break;
+    }
+    case Reader::case_json:
+    {
+      const auto j = nlohmann::json::parse(data.begin(), data.end(), nullptr, false);
+      if(j.is_discarded()) { o.message = name + ": not JSON"; break; }
+      edge_swap::Experiment_case c = edge_swap::case_from_json(j, name);
+      // Run small cases, briefly: the drivers see what the file set up.
+      if(c.points.size() <= 40 && (c.start.rfind("scramble:", 0) != 0 || edge_swap::scramble_flips(c.start) <= 100))
+      {
+        c.max_cycles = std::min<std::size_t>(c.max_cycles, 20);
+        const auto outcome = edge_swap::run_case(c);
+        if(outcome.ending.rfind("bad start", 0) == 0) { o.message = name + ": " + outcome.ending; break; }
+        if(!outcome.valid) throw std::logic_error("a case ended on an invalid triangulation");
+      }
+      o.accepted = true;
+      break;
+    }
+    case Reader::results:
+    {
+      const auto lines = edge_swap::read_results_text(name, std::string(data));
+      std::ostringstream summary;
+      edge_swap::print_summary(name, lines, summary);
+      o.accepted = true;
+      break;
+    }
+    }
+  }
+  catch(const CGAL::Edge_swapping_3::IO::Input_error& e)
+  {
+    o.message = e.what();
+  }
+  catch(const edge_swap::Usage_error& e)
+  {
+    o.message = e.what();
+  }
+  return o;
+}
+
+} // namespace fuzz
+
+#endif
