@@ -1,12 +1,14 @@
 // A libFuzzer target for one reader of the package, chosen at compile time
 // by EDGE_SWAPPING_3_FUZZ_READER (node, ele, medit, vtu, topcom, case_json,
-// results). Built by -DEDGE_SWAPPING_3_FUZZ=ON with clang; run by
-// scripts/fuzz.sh. A rejection is fine; an exception other than a reader's
-// error, a crash, a sanitizer report or a time-out is a finding.
+// results); the harness itself is compiled once (harness_object.cpp).
+// Built by -DEDGE_SWAPPING_3_FUZZ=ON with clang; run by scripts/fuzz.sh. A
+// rejection is fine; an exception other than a reader's error, a crash, a
+// sanitizer report or a time-out is a finding.
 
-#include "reader_harness.h"
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
+#include "readers.h"
 
 #ifndef EDGE_SWAPPING_3_FUZZ_READER
 #error "EDGE_SWAPPING_3_FUZZ_READER names the reader (node, ele, medit, vtu, topcom, case_json, results)"
@@ -14,6 +16,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  fuzz::run(fuzz::Reader::EDGE_SWAPPING_3_FUZZ_READER, std::string_view(reinterpret_cast<const char*>(data), size));
+  fuzz::run_compiled(fuzz::Reader::EDGE_SWAPPING_3_FUZZ_READER,
+                     std::string_view(reinterpret_cast<const char*>(data), size));
   return 0;
 }

@@ -1,5 +1,5 @@
-// One harness per reader, shared by the libFuzzer targets and by the
-// mutation test of the suite: read `data` as the file `name`, and when it is
+// The harness of each reader (readers.h names them), shared by the libFuzzer
+// targets and by the mutation test of the suite: read `data` as the file `name`, and when it is
 // accepted, go on as the program does (build and check the mesh, run a small
 // case, summarise results). The outcome is either accepted (a valid mesh or
 // result) or rejected with the error's message. Any other exception, a crash
@@ -8,6 +8,7 @@
 #ifndef EDGE_SWAPPING_3_FUZZ_READER_HARNESS_H
 #define EDGE_SWAPPING_3_FUZZ_READER_HARNESS_H
 
+#include "readers.h"
 #include "experiment_case.h"
 #include "experiment_summary.h"
 #include "mesh_files.h"
@@ -18,43 +19,6 @@
 #include <string_view>
 
 namespace fuzz {
-
-struct Outcome
-{
-  bool accepted = false;
-  std::string message; ///< the error, when rejected
-};
-
-enum class Reader { node, ele, medit, vtu, topcom, case_json, results };
-
-inline const char* reader_name(Reader r)
-{
-  switch(r)
-  {
-  case Reader::node: return "node";
-  case Reader::ele: return "ele";
-  case Reader::medit: return "medit";
-  case Reader::vtu: return "vtu";
-  case Reader::topcom: return "topcom";
-  case Reader::case_json: return "case_json";
-  default: return "results";
-  }
-}
-
-/// The file name the harness gives `reader`'s input in messages.
-inline std::string file_name(Reader r)
-{
-  switch(r)
-  {
-  case Reader::node: return "fuzz.node";
-  case Reader::ele: return "fuzz.ele";
-  case Reader::medit: return "fuzz.mesh";
-  case Reader::vtu: return "fuzz.vtu";
-  case Reader::topcom: return "TOPCOM output";
-  case Reader::case_json: return "fuzz.json";
-  default: return "fuzz.jsonl";
-  }
-}
 
 namespace internal {
 

@@ -1,0 +1,54 @@
+// The readers that are fuzzed, and what a harness run says: light enough for
+// the libFuzzer targets' own translation units (reader_harness.h runs them).
+
+#ifndef EDGE_SWAPPING_3_FUZZ_READERS_H
+#define EDGE_SWAPPING_3_FUZZ_READERS_H
+
+#include <string>
+#include <string_view>
+
+namespace fuzz {
+
+struct Outcome
+{
+  bool accepted = false;
+  std::string message; ///< the error, when rejected
+};
+
+enum class Reader { node, ele, medit, vtu, topcom, case_json, results };
+
+inline const char* reader_name(Reader r)
+{
+  switch(r)
+  {
+  case Reader::node: return "node";
+  case Reader::ele: return "ele";
+  case Reader::medit: return "medit";
+  case Reader::vtu: return "vtu";
+  case Reader::topcom: return "topcom";
+  case Reader::case_json: return "case_json";
+  default: return "results";
+  }
+}
+
+/// The file name the harness gives `reader`'s input in messages.
+inline std::string file_name(Reader r)
+{
+  switch(r)
+  {
+  case Reader::node: return "fuzz.node";
+  case Reader::ele: return "fuzz.ele";
+  case Reader::medit: return "fuzz.mesh";
+  case Reader::vtu: return "fuzz.vtu";
+  case Reader::topcom: return "TOPCOM output";
+  case Reader::case_json: return "fuzz.json";
+  default: return "fuzz.jsonl";
+  }
+}
+
+/// Runs the harness of `reader` on `data` (compiled once, in harness_object.cpp).
+Outcome run_compiled(Reader reader, std::string_view data);
+
+} // namespace fuzz
+
+#endif
