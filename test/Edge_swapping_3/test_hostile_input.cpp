@@ -171,6 +171,8 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
     expect_rejected(w, "experiment --families random-cube --sizes " + size + " -o " + w.path("r.jsonl"),
                     "--sizes: " + size + " points; a size is from 4", {});
   expect_rejected(w, "experiment --sizes 200000000 -o " + w.path("r.jsonl"), "a size is from 4 to 100000000", {});
+  expect_rejected(w, "experiment --families random-integer --sizes 100 --starts topcom -o " + w.path("r.jsonl"),
+                  "--starts topcom takes at most 20 points", {});
   // The same checks in the runner itself, whatever calls it.
   edge_swap::Experiment_case c;
   c.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};

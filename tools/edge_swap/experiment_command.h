@@ -14,6 +14,7 @@
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "output_files.h"
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -155,6 +156,10 @@ inline int run_experiment(const Experiment_options& opt)
   check_output_paths({opt.output});
   if(!opt.cases_dir.empty() && std::filesystem::exists(opt.cases_dir) && !std::filesystem::is_directory(opt.cases_dir))
     throw Usage_error("--cases '" + opt.cases_dir + "' is not a folder");
+  // TOPCOM enumerates every triangulation: beyond a few dozen points it would
+  // not end, so a typo is not allowed to start it.
+  constexpr std::size_t topcom_max_points = 20;
+  const bool topcom = std::find(opt.starts.begin(), opt.starts.end(), "topcom") != opt.starts.end();
   // Read, and an unknown family name or a point set that cannot be
   // triangulated rejected, before anything runs. A family is checked at each
   // size with the first seed; every instance checks its own points again.
@@ -162,11 +167,19 @@ inline int run_experiment(const Experiment_options& opt)
   for(const auto& f : families)
   {
     if(f.rfind("file:", 0) == 0)
+    {
       files[f] = read_point_file(f.substr(5));
+      if(topcom && files[f].size() > topcom_max_points)
+        throw Usage_error("--starts topcom takes at most 20 points; '" + f.substr(5) + "' has " +
+                          std::to_string(files[f].size()));
+    }
     else
       for(std::size_t size : opt.sizes)
       {
-        const std::string problem = ES::point_set_problem(family_points(f, size, first_seed, files), K());
+        const auto points = family_points(f, size, first_seed, files);
+        if(topcom && points.size() > topcom_max_points)
+          throw Usage_error("--starts topcom takes at most 20 points; family " + f + " has " + std::to_string(points.size()));
+        const std::string problem = ES::point_set_problem(points, K());
         if(!problem.empty())
           throw Usage_error("family " + f + " with " + std::to_string(size) + " points (seed " + std::to_string(first_seed) +
                             "): " + problem);

@@ -42,6 +42,8 @@ inline std::vector<std::vector<std::array<std::size_t, 4>>> topcom_triangulation
     {
       throw Usage_error(e.what());
     }
+    in.close();
+    if(!in) throw Usage_error("cannot write TOPCOM's input '" + stem + ".in'");
   }
   const std::string command = program + " < '" + stem + ".in' 2> /dev/null | head -n " + std::to_string(limit) +
                               " > '" + stem + ".out'";
