@@ -3,6 +3,7 @@
 #ifndef EDGE_SWAPPING_3_PROGRAM_RUNNER_H
 #define EDGE_SWAPPING_3_PROGRAM_RUNNER_H
 
+#include <catch2/catch.hpp>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -73,6 +74,18 @@ public:
 private:
   fs::path dir_;
 };
+
+/// Runs `edge_swap args` and requires a clean rejection: exit 2, `what` in
+/// the message, and no file in the directory but `inputs`.
+inline void require_clean_rejection(const Workdir& w, const std::string& args, const std::string& what,
+                                    const std::vector<std::string>& inputs)
+{
+  const Run r = w.run(args);
+  INFO("edge_swap " << args << "\nstderr: " << r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find(what) != std::string::npos);
+  REQUIRE(w.outputs(inputs) == 0);
+}
 
 } // namespace test
 

@@ -46,17 +46,6 @@ std::string tet_vtu(const std::string& subdomain)
                  "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells>");
 }
 
-// Runs `args` and expects exit 2, `what` in the message, and no file but `inputs`.
-void expect_rejected(const Workdir& w, const std::string& args, const std::string& what,
-                     const std::vector<std::string>& inputs)
-{
-  const Run r = w.run(args);
-  INFO("edge_swap " << args << "\nstderr: " << r.err);
-  REQUIRE(r.exit_code == 2);
-  REQUIRE(r.err.find(what) != std::string::npos);
-  REQUIRE(w.outputs(inputs) == 0);
-}
-
 std::string case_text(const std::string& extra)
 {
   return "{\"points\": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]], \"strategy\": \"plain\", \"order\": \"random\", "
@@ -82,8 +71,8 @@ TEST_CASE("Defect 1: cell indices out of range are errors wherever cells come fr
   for(const std::string cells : {"[[0,1,2,3],[1,2,3,-1]]", "[[0,1,2,3],[1,2,3,5]]", "[[0,1,2]]", "[[0,1,2,\"3\"]]", "7"})
   {
     w.write("case.json", case_text(", \"start\": \"cells\", \"cells\": " + cells));
-    expect_rejected(w, "replay " + w.path("case.json"), "case.json: bad case file: ", {"case.json"});
-    expect_rejected(w, "shrink " + w.path("case.json") + " -o " + w.path("s.json"), "case.json: bad case file: ",
+    require_clean_rejection(w, "replay " + w.path("case.json"), "case.json: bad case file: ", {"case.json"});
+    require_clean_rejection(w, "shrink " + w.path("case.json") + " -o " + w.path("s.json"), "case.json: bad case file: ",
                     {"case.json"});
   }
 
@@ -168,10 +157,10 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
 {
   Workdir w;
   for(const std::string size : {"0", "1", "2", "3"})
-    expect_rejected(w, "experiment --families random-cube --sizes " + size + " -o " + w.path("r.jsonl"),
+    require_clean_rejection(w, "experiment --families random-cube --sizes " + size + " -o " + w.path("r.jsonl"),
                     "--sizes: " + size + " points; a size is from 4", {});
-  expect_rejected(w, "experiment --sizes 200000000 -o " + w.path("r.jsonl"), "a size is from 4 to 100000000", {});
-  expect_rejected(w, "experiment --families random-integer --sizes 100 --starts topcom -o " + w.path("r.jsonl"),
+  require_clean_rejection(w, "experiment --sizes 200000000 -o " + w.path("r.jsonl"), "a size is from 4 to 100000000", {});
+  require_clean_rejection(w, "experiment --families random-integer --sizes 100 --starts topcom -o " + w.path("r.jsonl"),
                   "--starts topcom takes at most 20 points", {});
   // The same checks in the runner itself, whatever calls it.
   edge_swap::Experiment_case c;
@@ -198,7 +187,7 @@ TEST_CASE("Defect 6: threads that cannot start are reported - not fatal", "[host
   REQUIRE(r.err.find("threads could start") != std::string::npos);
   REQUIRE(r.out.find("8 instances in") != std::string::npos);
   REQUIRE(Workdir::slurp(w.path("s.jsonl")).size() > 0);
-  expect_rejected(w, "experiment --threads 100000 -o " + w.path("t.jsonl"), "--threads is at most 256", {"s.jsonl"});
+  require_clean_rejection(w, "experiment --threads 100000 -o " + w.path("t.jsonl"), "--threads is at most 256", {"s.jsonl"});
 }
 
 TEST_CASE("Defect 7: all outputs appear or none - a folder is not an output file", "[hostile]")
@@ -208,16 +197,16 @@ TEST_CASE("Defect 7: all outputs appear or none - a folder is not an output file
   fs::create_directories(w.path("dir"));
   const std::vector<std::string> inputs = {"cube.node", "dir"};
   const std::string in = w.path("cube.node") + " -o " + w.path("y.ele");
-  expect_rejected(w, "optimize " + in + " --stats " + w.path("dir"), "output '" + w.path("dir") + "' is a directory", inputs);
-  expect_rejected(w, "optimize " + in + " --history " + w.path("dir"), "is a directory", inputs);
-  expect_rejected(w, "optimize " + w.path("cube.node") + " -o " + w.path("dir"), "not an .ele", inputs);
-  expect_rejected(w, "optimize " + w.path("cube.node") + " -o " + w.path("no/such/y.ele"), "does not exist", inputs);
-  expect_rejected(w, "optimize " + in + " --stats " + w.path("y.node"), "named twice", inputs);
-  expect_rejected(w, "optimize " + in + " --stats " + w.path("h.csv") + " --history " + w.path("h.csv"), "named twice", inputs);
-  expect_rejected(w, "stats " + w.path("y.ele") + " --json " + w.path("dir"), "is a directory", inputs);
-  expect_rejected(w, "shrink " + w.path("missing.json") + " -o " + w.path("dir"), "is a directory", inputs);
-  expect_rejected(w, "experiment -o " + w.path("dir"), "is a directory", inputs);
-  expect_rejected(w, "mesh-domain two-spheres -o " + w.path("dir/"), "not an .ele", inputs);
+  require_clean_rejection(w, "optimize " + in + " --stats " + w.path("dir"), "output '" + w.path("dir") + "' is a directory", inputs);
+  require_clean_rejection(w, "optimize " + in + " --history " + w.path("dir"), "is a directory", inputs);
+  require_clean_rejection(w, "optimize " + w.path("cube.node") + " -o " + w.path("dir"), "not an .ele", inputs);
+  require_clean_rejection(w, "optimize " + w.path("cube.node") + " -o " + w.path("no/such/y.ele"), "does not exist", inputs);
+  require_clean_rejection(w, "optimize " + in + " --stats " + w.path("y.node"), "named twice", inputs);
+  require_clean_rejection(w, "optimize " + in + " --stats " + w.path("h.csv") + " --history " + w.path("h.csv"), "named twice", inputs);
+  require_clean_rejection(w, "stats " + w.path("y.ele") + " --json " + w.path("dir"), "is a directory", inputs);
+  require_clean_rejection(w, "shrink " + w.path("missing.json") + " -o " + w.path("dir"), "is a directory", inputs);
+  require_clean_rejection(w, "experiment -o " + w.path("dir"), "is a directory", inputs);
+  require_clean_rejection(w, "mesh-domain two-spheres -o " + w.path("dir/"), "not an .ele", inputs);
 
   // A rename that fails after another succeeded puts the replaced file back.
   w.write("a.txt", "old");
@@ -258,14 +247,14 @@ TEST_CASE("Defect 9: coordinates outside the supported range are rejected and no
   {
     w.write("p.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 " + x + " 0\n4 0 0 1\n");
     const std::string what = x == "1e400" ? "not finite" : x == "1e-400" ? "too small for a double" : "outside the supported range";
-    expect_rejected(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), "p.node:4: ", {"p.node"});
-    expect_rejected(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), what, {"p.node"});
+    require_clean_rejection(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), "p.node:4: ", {"p.node"});
+    require_clean_rejection(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), what, {"p.node"});
   }
   w.write("m.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1e307 0 0 1\n0 1 0 1\n0 0 1 1\nEnd\n");
-  expect_rejected(w, "stats " + w.path("m.mesh"), "m.mesh:6: the coordinate 1e+307", {"p.node", "m.mesh"});
+  require_clean_rejection(w, "stats " + w.path("m.mesh"), "m.mesh:6: the coordinate 1e+307", {"p.node", "m.mesh"});
   w.write("c.json", "{\"points\": [[0,0,0],[1e307,0,0],[0,1,0],[0,0,1]], \"start\": \"placing\", \"strategy\": \"plain\", "
                     "\"order\": \"random\", \"seed\": 1}");
-  expect_rejected(w, "replay " + w.path("c.json"), "point 1: the coordinate 1e+307", {"p.node", "m.mesh", "c.json"});
+  require_clean_rejection(w, "replay " + w.path("c.json"), "point 1: the coordinate 1e+307", {"p.node", "m.mesh", "c.json"});
 
   // At both ends of the range, and for tetrahedra too flat for double precision,
   // every measure is a finite number.
@@ -325,7 +314,7 @@ TEST_CASE("Defect 10: every message names the option or the file", "[hostile]")
       {"insert " + w.path("t.mesh") + " --points " + w.path("d.node") + out, "d.node: is a directory"},
       {"optimize " + w.path("fifo.node") + out, "fifo.node: is not a regular file"},
       {"mesh-domain two-spheres --size 1e-9 -o " + w.path("o.mesh"), "--size is from 0.05 to 100"}};
-  for(const auto& [args, what] : cases) expect_rejected(w, args, what, inputs);
+  for(const auto& [args, what] : cases) require_clean_rejection(w, args, what, inputs);
 }
 
 TEST_CASE("Defect 11: subdomain values and section counts are checked", "[hostile]")
@@ -334,7 +323,7 @@ TEST_CASE("Defect 11: subdomain values and section counts are checked", "[hostil
   for(const std::string v : {"1e300", "2.5", "-3e9"})
   {
     w.write("s.vtu", tet_vtu(v));
-    expect_rejected(w, "stats " + w.path("s.vtu"), "s.vtu: cell field 'subdomain': the value of cell 0 is not a whole number",
+    require_clean_rejection(w, "stats " + w.path("s.vtu"), "s.vtu: cell field 'subdomain': the value of cell 0 is not a whole number",
                     {"s.vtu"});
   }
   w.write("s.vtu", tet_vtu("7"));
@@ -344,12 +333,12 @@ TEST_CASE("Defect 11: subdomain values and section counts are checked", "[hostil
   {
     w.write("c.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n" + section +
                           "\n6148914691236517206\n1 2 3\n");
-    expect_rejected(w, "stats " + w.path("c.mesh"), "c.mesh:10: number of", {"s.vtu", "c.mesh"});
+    require_clean_rejection(w, "stats " + w.path("c.mesh"), "c.mesh:10: number of", {"s.vtu", "c.mesh"});
   }
   // A reference larger than an int is a clear error.
   w.write("r.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n"
                     "Tetrahedra\n1\n1 2 3 4 99999999999\nEnd\n");
-  expect_rejected(w, "stats " + w.path("r.mesh"), "r.mesh:11: a tetrahedron reference is out of range", {"s.vtu", "c.mesh", "r.mesh"});
+  require_clean_rejection(w, "stats " + w.path("r.mesh"), "r.mesh:11: a tetrahedron reference is out of range", {"s.vtu", "c.mesh", "r.mesh"});
 }
 
 TEST_CASE("Defect 12: partial files are recognisable and stale ones go on the next run", "[hostile]")

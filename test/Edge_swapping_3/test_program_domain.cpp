@@ -90,16 +90,6 @@ bool in_flow_region(const IO::Medit_mesh& m, const P3& p)
   return in_box(p) && !in_a_hole(m, p) && !encroaches_boundary(m, p);
 }
 
-void require_clean_rejection(const Workdir& w, const std::string& args, const std::string& what,
-                             const std::vector<std::string>& inputs)
-{
-  const Run r = w.run(args);
-  INFO("args: " << args << "\nstderr: " << r.err);
-  REQUIRE(r.exit_code == 2);
-  REQUIRE(r.err.find(what) != std::string::npos);
-  REQUIRE(w.outputs(inputs) == 0);
-}
-
 } // namespace
 
 TEST_CASE("Two-spheres domain: refinement keeps the boundary and the flow region and inserts inside", "[program][domain]")
