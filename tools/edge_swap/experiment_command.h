@@ -185,9 +185,11 @@ inline int run_experiment(const Experiment_options& opt)
                             "): " + problem);
       }
   }
-  // The results already there are checked before anything is appended.
+  // The results already there are checked before anything is appended; a
+  // line cut short by a stop is removed, so that appending starts on a new line.
+  const bool existed = std::filesystem::exists(opt.output);
   std::set<std::string> done;
-  for(const auto& j : read_results_file(opt.output, false)) done.insert(j["key"].get<std::string>());
+  for(const auto& j : read_results_file(opt.output, true)) done.insert(j["key"].get<std::string>());
 
   // Enumerate: the same list, in the same order, for every shard and every resume.
   std::vector<Experiment_instance> instances;
@@ -233,8 +235,6 @@ inline int run_experiment(const Experiment_options& opt)
             << ", " << (in_shard - todo.size()) << " already in " << opt.output << ", " << todo.size() << " to run\n";
   if(!opt.cases_dir.empty()) std::filesystem::create_directories(opt.cases_dir);
 
-  const bool existed = std::filesystem::exists(opt.output);
-  read_results_file(opt.output, true); // a line cut short by a stop is removed: appending starts on a new line
   std::ofstream out(opt.output, std::ios::app | std::ios::binary);
   if(!out) throw Usage_error("cannot write '" + opt.output + "'");
   std::string write_error;

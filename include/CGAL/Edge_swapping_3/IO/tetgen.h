@@ -45,12 +45,7 @@ public:
     return scan_.number<T>(token, what);
   }
 
-  bool more()
-  {
-    std::string_view token;
-    Text_scanner copy = scan_;
-    return copy.next_token_in_line(token);
-  }
+  bool more() { return scan_.line_has_more(); }
 
   void expect_end()
   {

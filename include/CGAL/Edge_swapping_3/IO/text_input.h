@@ -1,7 +1,8 @@
 // What every reader of the package shares: the error that names the file,
-// the line and the problem; reading a whole file (a regular file only); the
-// supported coordinate range; numbers parsed without streams, with range
-// checks; and a scanner over the text that counts lines.
+// the line and the problem; reading a whole file (a regular file only);
+// numbers parsed without streams, with range checks; and a scanner over the
+// text that counts lines. The supported coordinate range is in
+// point_set_checks.h.
 //
 // Every reader works on text in memory (`read_*_text(name, text)`), so that
 // a fuzzer can feed it, and checks every count against the bytes that are
@@ -124,16 +125,20 @@ public:
   /// The next token of the current line; false at its end.
   bool next_token_in_line(std::string_view& token)
   {
-    skip_blanks();
-    if(pos_ == text_.size() || text_[pos_] == '\n' || text_[pos_] == '#') return false;
+    if(!line_has_more()) return false;
     token = take_token();
     return true;
   }
 
+  /// Whether the current line has another token.
+  bool line_has_more()
+  {
+    skip_blanks();
+    return pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '#';
+  }
+
   /// Bytes not yet read: no count of entries can be larger than this allows.
   std::size_t remaining_bytes() const { return text_.size() - pos_; }
-  std::size_t line() const { return line_; }
-  const std::string& name() const { return name_; }
 
   [[noreturn]] void fail(const std::string& what) const
   {
