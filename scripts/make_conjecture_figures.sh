@@ -42,4 +42,4 @@ PY
 $E optimize "$D/stuck9.node" --start placing:input --criterion delaunay --seed 6012 -o "$D/stuck9_end.ele"
 $E optimize "$D/cycle8.ele" --helper --order storage --max-cycles 300 -o "$D/cycle8_end.ele"
 /usr/bin/python3 doc/Edge_swapping_3/plot_cases.py doc/Edge_swapping_3/figures/smallest_cases.png \
-  "Plain swapping stuck (Joe's phenomenon)" "$D/stuck9_end" "Helper strategy cycling in storage order" "$D/cycle8_end"
+  "Plain swapping stuck (Joe's phenomenon)" "$D/stuck9_end" "Helper strategy in storage order, cycle 300 (still swapping)" "$D/cycle8_end"
