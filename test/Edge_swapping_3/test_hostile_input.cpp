@@ -250,11 +250,15 @@ TEST_CASE("Defect 9: coordinates outside the supported range are rejected and no
     require_clean_rejection(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), "p.node:4: ", {"p.node"});
     require_clean_rejection(w, "optimize " + w.path("p.node") + " -o " + w.path("o.ele"), what, {"p.node"});
   }
+  // Vertex fields are at most 1e100 in magnitude: their gradients stay finite.
+  w.write("a.node", "4 3 1 0\n1 0 0 0 1\n2 1 0 0 2\n3 0 1 0 -1e200\n4 0 0 1 4\n");
+  require_clean_rejection(w, "optimize " + w.path("a.node") + " -o " + w.path("o.vtu"),
+                          "a.node: field 'attribute1' at point 2 is larger than 1e100", {"p.node", "a.node"});
   w.write("m.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 1\n1e307 0 0 1\n0 1 0 1\n0 0 1 1\nEnd\n");
-  require_clean_rejection(w, "stats " + w.path("m.mesh"), "m.mesh:6: the coordinate 1e+307", {"p.node", "m.mesh"});
+  require_clean_rejection(w, "stats " + w.path("m.mesh"), "m.mesh:6: the coordinate 1e+307", {"p.node", "a.node", "m.mesh"});
   w.write("c.json", "{\"points\": [[0,0,0],[1e307,0,0],[0,1,0],[0,0,1]], \"start\": \"placing\", \"strategy\": \"plain\", "
                     "\"order\": \"random\", \"seed\": 1}");
-  require_clean_rejection(w, "replay " + w.path("c.json"), "point 1: the coordinate 1e+307", {"p.node", "m.mesh", "c.json"});
+  require_clean_rejection(w, "replay " + w.path("c.json"), "point 1: the coordinate 1e+307", {"p.node", "a.node", "m.mesh", "c.json"});
 
   // At both ends of the range, and for tetrahedra too flat for double precision,
   // every measure is a finite number.
