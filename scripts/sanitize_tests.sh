@@ -15,7 +15,7 @@ bash scripts/install_dependencies.sh
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-      -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=OFF -DEDGE_SWAPPING_3_BUILD_EXAMPLES=OFF > /dev/null
+      -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=OFF -DEDGE_SWAPPING_3_BUILD_EXAMPLES=ON > /dev/null
 cmake --build build-sanitize -j "$(nproc)"
 export EDGE_SWAPPING_3_SANITIZED=1
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
