@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 
 using namespace test;
 namespace fs = std::filesystem;
@@ -115,7 +116,8 @@ TEST_CASE("Every reader accepts a valid input or rejects it with a message namin
       REQUIRE(o.message.find(": ") != std::string::npos);
     }
     // Both outcomes occur: the mutants reach past the first line.
-    INFO("reader " << fuzz::reader_name(reader) << ": " << accepted << " accepted, " << rejected << " rejected");
+    std::cout << "mutation test, reader " << fuzz::reader_name(reader) << ", seed " << seed << ": " << accepted
+              << " accepted, " << rejected << " rejected\n";
     REQUIRE(accepted >= seeds.size());
     REQUIRE(rejected > count / 4);
   }
