@@ -218,6 +218,16 @@ TEST_CASE("Defect 7: all outputs appear or none - a folder is not an output file
   REQUIRE_THROWS_WITH(files.commit(), Catch::Contains("cannot write '" + w.path("gone/b.txt") + "'"));
   REQUIRE(Workdir::slurp(w.path("a.txt")) == "old");
   REQUIRE(w.outputs({"cube.node", "dir", "a.txt"}) == 0);
+
+  // A writer refuses a value that is not finite: nothing is written, no partial file stays.
+  edge_swap::Output_files nan_files;
+  nan_files.add(w.path("b.txt"), [](std::ostream& os) { os << "complete"; });
+  nan_files.add(w.path("n.vtu"), [](std::ostream& os) {
+    IO::write_vtu_file(os, {{0, 0, 0}}, {}, {{"f", {std::nan("")}}}, {});
+  });
+  REQUIRE_THROWS_WITH(nan_files.commit(), Catch::Contains("cannot write '" + w.path("n.vtu") +
+                                                          "': a value of field 'f' is not a finite number"));
+  REQUIRE(w.outputs({"cube.node", "dir", "a.txt"}) == 0);
 }
 
 TEST_CASE("Defect 8: a full disk is an error - every write and close is checked", "[hostile]")

@@ -109,9 +109,18 @@ public:
       temporary.push_back(temporary_name(f.path, partial_tag));
       std::ofstream out(temporary.back(), std::ios::binary);
       errno = 0;
-      if(out) f.writer(out);
+      std::string refused; // a writer that refuses its data (a value that is not finite)
+      try
+      {
+        if(out) f.writer(out);
+      }
+      catch(const std::exception& e)
+      {
+        refused = e.what();
+      }
       out.flush();
       out.close();
+      if(!refused.empty()) undo("cannot write '" + f.path + "': " + refused);
       if(!out) undo("cannot write '" + f.path + "'" + (errno ? std::string(": ") + std::strerror(errno) : std::string()));
     }
     // Keep what each output replaces until all are in place.

@@ -10,6 +10,7 @@
 #define CGAL_EDGE_SWAPPING_3_IO_MEDIT_H
 
 #include <CGAL/Edge_swapping_3/IO/text_input.h>
+#include <CGAL/Edge_swapping_3/IO/text_output.h>
 #include <array>
 #include <ostream>
 #include <string>
@@ -142,7 +143,8 @@ inline void write_medit_file(std::ostream& out, const Medit_mesh& m)
   out.precision(17);
   out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << m.points.size() << '\n';
   for(std::size_t k = 0; k < m.points.size(); ++k)
-    out << m.points[k][0] << ' ' << m.points[k][1] << ' ' << m.points[k][2] << ' '
+    out << finite_value(m.points[k][0], "a coordinate") << ' ' << finite_value(m.points[k][1], "a coordinate") << ' '
+        << finite_value(m.points[k][2], "a coordinate") << ' '
         << (m.point_references.empty() ? 0 : m.point_references[k]) << '\n';
   out << "Triangles\n" << m.triangles.size() << '\n';
   for(std::size_t k = 0; k < m.triangles.size(); ++k)

@@ -10,6 +10,7 @@
 #define CGAL_EDGE_SWAPPING_3_IO_TETGEN_H
 
 #include <CGAL/Edge_swapping_3/IO/text_input.h>
+#include <CGAL/Edge_swapping_3/IO/text_output.h>
 #include <array>
 #include <ostream>
 #include <string>
@@ -180,8 +181,9 @@ inline void write_node_file(std::ostream& out, const std::vector<std::array<doub
   out << points.size() << " 3 " << n_attr << " 0\n";
   for(std::size_t k = 0; k < points.size(); ++k)
   {
-    out << k + first_index << ' ' << points[k][0] << ' ' << points[k][1] << ' ' << points[k][2];
-    for(std::size_t a = 0; a < n_attr; ++a) out << ' ' << attributes[k][a];
+    out << k + first_index << ' ' << finite_value(points[k][0], "a coordinate") << ' '
+        << finite_value(points[k][1], "a coordinate") << ' ' << finite_value(points[k][2], "a coordinate");
+    for(std::size_t a = 0; a < n_attr; ++a) out << ' ' << finite_value(attributes[k][a], "an attribute");
     out << '\n';
   }
 }

@@ -5,6 +5,7 @@
 #define CGAL_EDGE_SWAPPING_3_IO_VTU_H
 
 #include <CGAL/Edge_swapping_3/IO/text_input.h>
+#include <CGAL/Edge_swapping_3/IO/text_output.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -35,7 +36,7 @@ inline void write_vtu_file(std::ostream& out, const std::vector<std::array<doubl
     for(const auto& [name, values] : f)
     {
       out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-      for(double v : values) out << v << '\n';
+      for(double v : values) out << finite_value(v, "a value", &name) << '\n';
       out << "</DataArray>\n";
     }
     out << "</" << tag << ">\n";
@@ -43,7 +44,9 @@ inline void write_vtu_file(std::ostream& out, const std::vector<std::array<doubl
   fields("PointData", point_fields);
   fields("CellData", cell_fields);
   out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for(const auto& p : points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for(const auto& p : points)
+    out << finite_value(p[0], "a coordinate") << ' ' << finite_value(p[1], "a coordinate") << ' '
+        << finite_value(p[2], "a coordinate") << '\n';
   out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for(const auto& t : tetrahedra) out << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
   out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
