@@ -41,15 +41,15 @@ int main(int argc, char** argv)
       t.start();
       ES::insert_by_placing(tr, points);
       out[0] = t.time();
-      ES::Swap_options options; // random face order
-      options.random_seed = 1;
-      options.max_cycles = max_cycles;
       CGAL::Real_timer clock;
       clock.start();
-      options.cycle_visitor = [&clock](const ES::Cycle_record& r) {
-        std::cerr << "  cycle " << r.cycle << ": " << r.total_swaps() << " swaps, " << clock.time() << " s\n";
+      std::function<void(const ES::Cycle_record&)> progress = [&clock](const ES::Cycle_record& r) {
+        std::cerr << "  round " << r.cycle << ": " << r.total_swaps() << " swaps, " << r.visits << " visits, "
+                  << clock.time() << " s\n";
       };
-      const ES::Swap_report report = CGAL::swap_edges_with_helper(tr, options);
+      // The work queue (the default), random face order.
+      const ES::Swap_report report = CGAL::swap_edges_with_helper(
+        tr, ES::parameters::cycle_visitor(progress, CGAL::parameters::random_seed(1).number_of_iterations(max_cycles)));
       const auto s = report.total_swaps();
       out[1] = report.seconds;
       out[2] = double(report.number_of_cycles());

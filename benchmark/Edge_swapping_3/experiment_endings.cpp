@@ -37,10 +37,10 @@ int main(int argc, char** argv)
         for(std::size_t k = 0; k < n; ++k) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
         Triangulation tr;
         ES::insert_by_placing(tr, points);
-        ES::Swap_options options;
-        options.face_order = order;
-        options.random_seed = seed;
-        options.max_cycles = max_cycles;
+        namespace np = ES::parameters;
+        const auto options =
+          np::schedule(ES::PAPER_CYCLES, np::face_order(order, np::delaunay_repair(false, CGAL::parameters::random_seed(seed)
+                                                                                        .number_of_iterations(max_cycles))));
         const auto report = helper ? CGAL::swap_edges_with_helper(tr, options)
                                    : CGAL::swap_edges(tr, ES::Delaunay_criterion(), options);
         ++ending[report.ending];

@@ -22,12 +22,12 @@ int main()
   Triangulation tr;
   ES::insert_by_placing(tr, points); // no flip: an arbitrary triangulation
 
-  ES::Swap_options options;
-  options.face_order = ES::RANDOM_ORDER;
-  const ES::Swap_report report = CGAL::swap_edges_with_helper(tr, options);
+  // The work queue (the default schedule) in a random face order, seed 0.
+  const ES::Swap_report report =
+    CGAL::swap_edges_with_helper(tr, ES::parameters::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(0)));
 
   const ES::Delaunay_comparison cmp = ES::compare_with_delaunay(tr);
   std::cout << ES::swap_ending_name(report.ending) << " after " << report.number_of_cycles()
-            << " cycles; equal to CGAL's Delaunay triangulation: " << (cmp.identical ? "yes" : "no") << '\n';
+            << " rounds; equal to CGAL's Delaunay triangulation: " << (cmp.identical ? "yes" : "no") << '\n';
   return cmp.identical ? 0 : 1;
 }

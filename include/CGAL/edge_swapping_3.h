@@ -2,97 +2,236 @@
 // CGAL::Triangulation_3. This header is the public entry: it brings in the
 // criteria and defines the two drivers users call.
 //
-//   CGAL::swap_edges(tr, criterion, options)        Algorithm 3, any criterion
-//   CGAL::swap_edges_with_helper(tr, options)       Algorithm 4, the helper strategy
+//   CGAL::swap_edges(tr, criterion, np)        Algorithm 3, any criterion
+//   CGAL::swap_edges_with_helper(tr, np)       Algorithm 4, the helper strategy
+//
+// A driver is a schedule (a work queue, or the paper's cycles), a rule (what a
+// visit of a facet decides) and an ending (converged, stuck, limit reached).
 
 #ifndef CGAL_EDGE_SWAPPING_3_H
 #define CGAL_EDGE_SWAPPING_3_H
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Flip_visitor.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
-#include <CGAL/Edge_swapping_3/Swap_options.h>
-#include <CGAL/Edge_swapping_3/internal/cycle_driver.h>
+#include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
+#include <CGAL/Edge_swapping_3/internal/swap_driver.h>
 #include <type_traits>
 
 namespace CGAL {
+namespace Edge_swapping_3 {
+namespace internal {
 
-/// Algorithm 3 of the paper: cycles over all interior facets and swaps every
-/// swappable configuration that `criterion` (a model of `SwapCriterion_3`)
-/// prefers in its alternative form, until a cycle makes no swap.
-/// With `Edge_swapping_3::Delaunay_criterion` the ending is CONVERGED only if
-/// every facet is then locally Delaunay, else STUCK (Joe's local optima).
-/// In a domain mesh, `constraints` (a model of `MeshConstraints_3`) keeps the
-/// constrained facets and the subdomains: a flip that would remove the one or
-/// join the other is not made.
-template <class Tr, class Criterion, class Constraints = Edge_swapping_3::No_constraints>
-Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
-                                        const Edge_swapping_3::Swap_options& options = {},
-                                        const Constraints& constraints = Constraints())
+/// A criterion that declares `static constexpr bool is_delaunay_criterion = true`
+/// (and has a `perturbation`) gets the Delaunay fast path and endings.
+template <class C, class = void>
+struct Is_delaunay_criterion : std::false_type {};
+template <class C>
+struct Is_delaunay_criterion<C, std::enable_if_t<C::is_delaunay_criterion>> : std::true_type {};
+
+template <class NamedParameters>
+Driver_settings driver_settings(const NamedParameters& np)
 {
-  using namespace Edge_swapping_3;
-  std::array<typename Tr::Cell_handle, 4> created;
-  auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](typename Tr::Cell_handle c, int i) {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Driver_settings s;
+  s.schedule = choose_parameter(get_parameter(np, internal_np::schedule), WORK_QUEUE);
+  s.face_order = choose_parameter(get_parameter(np, internal_np::face_order), RANDOM_ORDER);
+  s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
+  s.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
+  s.record_non_delaunay_facets = choose_parameter(get_parameter(np, internal_np::record_non_delaunay_facets), false);
+  s.perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
+  s.cycle_visitor = choose_parameter(get_parameter(np, internal_np::cycle_visitor),
+                                     std::function<void(const Cycle_record&)>());
+  return s;
+}
+
+/// Algorithm 2 with a criterion: swap a swappable configuration the criterion prefers.
+template <class Criterion>
+struct Criterion_rule
+{
+  const Criterion& criterion;
+
+  template <class Driver, class Cell_handle>
+  void operator()(Driver& d, Cell_handle c, int i) const
+  {
+    constexpr bool delaunay = Is_delaunay_criterion<Criterion>::value;
+    auto& tr = d.triangulation();
     // The exact in-sphere test is cheaper than the classification, and most
     // facets pass it: for Delaunay, only a failing facet is classified.
-    if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
-      if(is_locally_delaunay(tr, c, i, criterion.perturbation)) return -1;
+    if constexpr(delaunay)
+      if(is_locally_delaunay(tr, c, i, criterion.perturbation)) return;
     const auto conf = classify_facet(tr, c, i);
-    if(!conf.is_swappable() || !flip_respects_constraints(tr, conf.flip_plan(), constraints) ||
-       !criterion(tr, conf))
-      return -1;
-    flip(tr, conf, created, constraints);
-    return int(conf.flip_kind());
-  });
-  if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
+    if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()) &&
+       criterion(tr, conf))
+      d.flip(conf);
+    else
+      d.keep(conf, delaunay, false);
+  }
+};
+
+/// Algorithm 4: a non-Delaunay configuration tags its tetrahedra; a swappable
+/// configuration with a tagged tetrahedron is swapped, Delaunay or not.
+struct Helper_rule
+{
+  template <class Driver, class Cell_handle>
+  void operator()(Driver& d, Cell_handle c, int i) const
   {
-    report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, criterion.perturbation);
-    if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
+    auto& tr = d.triangulation();
+    // A Delaunay facet between two untagged cells is skipped unclassified: a
+    // swappable configuration with a tagged cell is also reached through a
+    // facet of that cell, so no help is lost, only deferred.
+    const bool delaunay = is_locally_delaunay(tr, c, i, d.perturbation());
+    if(delaunay && !d.is_tagged(c) && !d.is_tagged(c->neighbor(i))) return;
+    const auto conf = classify_facet(tr, c, i);
+    if(!delaunay)
+      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) d.tag(conf.tetrahedron(k));
+    if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()))
+    {
+      const auto& plan = conf.flip_plan();
+      for(int k = 0; k < plan.number_of_old_cells; ++k)
+        if(d.is_tagged(plan.old_cells[k]))
+        {
+          d.flip(conf); // the new cells are untagged
+          return;
+        }
+    }
+    // A non-Delaunay facet tags the cells around its edges: visit it again when they change.
+    d.keep(conf, !delaunay, !delaunay);
+  }
+};
+
+template <class Driver>
+void decide_delaunay_ending(Swap_report& report, Driver& driver, const Driver_settings& s)
+{
+  report.non_delaunay_facets =
+    (long long)((s.schedule == WORK_QUEUE) ? driver.number_of_non_delaunay_facets_left()
+                                           : number_of_non_delaunay_facets(driver.triangulation(), s.perturbation));
+  if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
+}
+
+template <class Tr, class NamedParameters>
+Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  const auto& constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  Default_flip_visitor default_visitor;
+  auto&& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  typedef std::remove_const_t<std::remove_reference_t<decltype(constraints)>> Constraints;
+  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
+  Helper_rule rule;
+  Swap_report report = driver.run(rule);
+  decide_delaunay_ending(report, driver, s);
+  return report;
+}
+
+} // namespace internal
+} // namespace Edge_swapping_3
+
+/// \brief Algorithm 3 of the paper: swaps every swappable configuration that
+/// `criterion` (a model of `SwapCriterion_3`) prefers in its alternative form,
+/// until none is left.
+///
+/// With `Edge_swapping_3::Delaunay_criterion` the result is the Delaunay
+/// triangulation (CGAL's, cell for cell, with `CGAL_PERTURBATION`) from any
+/// valid start: plain flips first; where they are stuck (Joe's local optima),
+/// the helper strategy for at most `helper_rounds_before_rebuild` rounds; where
+/// that has not converged, the cells are rebuilt from CGAL's Delaunay
+/// triangulation of the vertices. `report.repair_path` says which step ended
+/// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
+/// whose ending is then CONVERGED or STUCK. A mesh with constraints is never
+/// rebuilt: its repair ends after the helper step.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{schedule} `WORK_QUEUE` (default) or `PAPER_CYCLES` \cgalParamNEnd
+///   \cgalParamNBegin{face_order} `RANDOM_ORDER` (default) or `STORAGE_ORDER` \cgalParamNEnd
+///   \cgalParamNBegin{random_seed} `unsigned int`, default 0 \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} the round limit, default 1000 \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `FlipVisitor_3`, default `Default_flip_visitor` \cgalParamNEnd
+///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
+///   \cgalParamNBegin{cycle_visitor} called after each round \cgalParamNEnd
+///   \cgalParamNBegin{record_non_delaunay_facets} `bool`, default false \cgalParamNEnd
+///   \cgalParamNBegin{delaunay_repair} `bool`, default true \cgalParamNEnd
+///   \cgalParamNBegin{helper_rounds_before_rebuild} `std::size_t`, default 100 \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class Criterion, class NamedParameters = parameters::Default_named_parameters>
+Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  namespace ES = Edge_swapping_3;
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::get_parameter_reference;
+  constexpr bool delaunay = ES::internal::Is_delaunay_criterion<Criterion>::value;
+
+  ES::internal::Driver_settings s = ES::internal::driver_settings(np);
+  if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
+  const auto& constraints = choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints), ES::No_constraints());
+  ES::Default_flip_visitor default_visitor;
+  auto&& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
+  typedef std::remove_const_t<std::remove_reference_t<decltype(constraints)>> Constraints;
+  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+
+  ES::internal::Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
+  ES::internal::Criterion_rule<Criterion> rule{criterion};
+  ES::Swap_report report = driver.run(rule);
+  if constexpr(delaunay)
+  {
+    ES::internal::decide_delaunay_ending(report, driver, s);
+    if(report.ending == ES::CONVERGED || !choose_parameter(get_parameter(np, ES::internal_np::delaunay_repair), true))
+      return report;
+
+    // Stuck (or out of rounds): the helper, then the rebuild.
+    report.stuck_after_plain_flips = report.non_delaunay_facets;
+    ES::internal::Driver_settings hs = s;
+    hs.max_rounds = choose_parameter(get_parameter(np, ES::internal_np::helper_rounds_before_rebuild), std::size_t(100));
+    ES::Swap_report helper = ES::internal::run_helper(tr, hs, np);
+    report.repair_path = ES::HELPER_FLIPS;
+    report.helper_rounds = helper.number_of_cycles();
+    for(ES::Cycle_record r : helper.cycles)
+    {
+      r.cycle += report.cycles.size();
+      report.cycles.push_back(r);
+    }
+    report.seconds += helper.seconds;
+    report.ending = helper.ending;
+    report.non_delaunay_facets = helper.non_delaunay_facets;
+    if(report.ending != ES::CONVERGED && std::is_same<Constraints, ES::No_constraints>::value)
+    {
+      CGAL::Real_timer timer;
+      timer.start();
+      report.repair_path = ES::REBUILT;
+      report.rebuilt_cells = ES::internal::rebuild_as_delaunay(tr);
+      report.ending = ES::CONVERGED;
+      report.non_delaunay_facets = 0;
+      report.seconds += timer.time();
+    }
   }
   return report;
 }
 
-/// Algorithm 4 of the paper, the helper strategy, for the Delaunay criterion:
-/// a configuration that is not Delaunay tags its tetrahedra; a swappable
-/// configuration with a tagged tetrahedron is swapped, Delaunay or not, which
-/// lets a non-Delaunay concave configuration out of a local optimum.
-/// A tag lives on its cell until a flip replaces the cell. Tags are kept in the
-/// cells' TDS mark (`tds_data()`, which CGAL's own operations clear after use),
-/// and all marks are clear again when the function returns.
-/// `constraints` as for `swap_edges`.
-template <class Tr, class Constraints = Edge_swapping_3::No_constraints>
-Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr,
-                                                    const Edge_swapping_3::Swap_options& options = {},
-                                                    const Constraints& constraints = Constraints())
+/// \brief Algorithm 4 of the paper, the helper strategy, for the Delaunay
+/// criterion: a configuration that is not Delaunay tags its tetrahedra; a
+/// swappable configuration with a tagged tetrahedron is swapped, Delaunay or
+/// not, which lets a non-Delaunay concave configuration out of a local optimum.
+/// A tag lives on its cell until a flip replaces the cell; tags are kept by
+/// the driver, not in the cells. Its termination is not proved: the ending
+/// is CONVERGED, STUCK or CYCLE_LIMIT_REACHED, never repaired.
+///
+/// Named parameters as `swap_edges`, plus `perturbation` (the tie-breaking of
+/// its Delaunay tests, default `CGAL_PERTURBATION`); no `delaunay_repair`.
+template <class Tr, class NamedParameters = parameters::Default_named_parameters>
+Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr, const NamedParameters& np = parameters::default_values())
 {
-  using namespace Edge_swapping_3;
-  typedef typename Tr::Cell_handle Cell_handle;
-  auto tagged = [](Cell_handle c) { return c->tds_data().is_in_conflict(); };
-  std::array<Cell_handle, 4> created;
-
-  auto report = Edge_swapping_3::internal::run_cycles(tr, options, [&](Cell_handle c, int i) {
-    // A Delaunay facet between two untagged cells is skipped unclassified: a
-    // swappable configuration with a tagged cell is also reached through a
-    // facet of that cell, so no help is lost, only deferred.
-    const bool delaunay = is_locally_delaunay(tr, c, i, options.perturbation);
-    if(delaunay && !tagged(c) && !tagged(c->neighbor(i)))
-      return -1;
-    const auto conf = classify_facet(tr, c, i);
-    if(!delaunay)
-      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) conf.tetrahedron(k)->tds_data().mark_in_conflict();
-    if(!conf.is_swappable()) return -1;
-    const auto& plan = conf.flip_plan();
-    if(!flip_respects_constraints(tr, plan, constraints)) return -1;
-    bool any_tagged = false;
-    for(int k = 0; k < plan.number_of_old_cells; ++k) any_tagged = any_tagged || tagged(plan.old_cells[k]);
-    if(!any_tagged) return -1;
-    flip(tr, conf, created, constraints); // the new cells are untagged
-    return int(conf.flip_kind());
-  });
-  for(auto c : tr.all_cell_handles()) c->tds_data().clear();
-  report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, options.perturbation);
-  if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
-  return report;
+  return Edge_swapping_3::internal::run_helper(tr, Edge_swapping_3::internal::driver_settings(np), np);
 }
 
 } // namespace CGAL

@@ -19,14 +19,13 @@ void check_monotone(const Criterion& criterion, Global global, bool larger_is_wo
   ES::insert_by_placing(tr, random_in_cube(500, seed));
   double previous = global(tr);
   const double start = previous;
-  ES::Swap_options options;
-  options.cycle_visitor = [&](const ES::Cycle_record&) {
+  auto after_round = [&](const ES::Cycle_record&) {
     const double now = global(tr);
     if(larger_is_worse) REQUIRE(now <= previous);
     else REQUIRE(now >= previous);
     previous = now;
   };
-  const auto report = CGAL::swap_edges(tr, criterion, options);
+  const auto report = CGAL::swap_edges(tr, criterion, ES::parameters::cycle_visitor(after_round));
   REQUIRE(tr.is_valid(true));
   REQUIRE(report.ending == ES::CONVERGED);
   // A placing start is poor: the run must change it, and never for the worse.
@@ -71,12 +70,11 @@ TEST_CASE("Minimum edges: the counts never grow; 8 000 points lose at least 10% 
   ES::insert_delaunay(tr, random_in_cube(8000, seed));
   const auto before = ES::mesh_statistics(tr);
   std::size_t previous = before.cells;
-  ES::Swap_options options;
-  options.cycle_visitor = [&](const ES::Cycle_record& r) {
+  auto after_round = [&](const ES::Cycle_record& r) {
     REQUIRE(r.cells <= previous);
     previous = r.cells;
   };
-  const auto report = CGAL::swap_edges(tr, ES::Min_edges_criterion(), options);
+  const auto report = CGAL::swap_edges(tr, ES::Min_edges_criterion(), ES::parameters::cycle_visitor(after_round));
   const auto after = ES::mesh_statistics(tr);
   REQUIRE(tr.is_valid(true));
   REQUIRE(report.ending == ES::CONVERGED);

@@ -130,9 +130,8 @@ TEST_CASE("Domain mesh: swaps and refinement keep constrained facets and subdoma
   ES::Domain_constraints constraints;
 
   // A scrambled start, then the helper strategy: neither may cross x = 2.
-  ES::Swap_options options;
-  options.random_seed = 2;
-  CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(), options, constraints);
+  CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(),
+                   ES::parameters::mesh_constraints(constraints, CGAL::parameters::random_seed(2)));
   REQUIRE(constrained_facets(tr) == facets_before);
 
   ES::Refinement_options<Domain_tr> refinement;

@@ -30,14 +30,12 @@ inline int run_demo(std::size_t n, unsigned int seed)
   std::cout << "1. Start: placing (each point splits its tetrahedron, no flip): "
             << tr.number_of_finite_cells() << " cells, "
             << ES::number_of_non_delaunay_facets(tr) << " faces not locally Delaunay\n";
-  ES::Swap_options options;
-  options.face_order = ES::RANDOM_ORDER;
-  options.random_seed = seed;
-  options.cycle_visitor = cycle_progress("helper");
-  const auto report = CGAL::swap_edges_with_helper(tr, options);
+  namespace np = ES::parameters;
+  const auto report = CGAL::swap_edges_with_helper(
+    tr, np::face_order(ES::RANDOM_ORDER, np::cycle_visitor(cycle_progress("helper"), CGAL::parameters::random_seed(seed))));
   const auto t = report.total_swaps();
   std::cout << "   Helper strategy (random face order): " << ES::swap_ending_name(report.ending) << " after "
-            << report.number_of_cycles() << " cycles, " << t[0] << " 2-3, " << t[1] << " 3-2, " << t[2]
+            << report.number_of_cycles() << " rounds, " << t[0] << " 2-3, " << t[1] << " 3-2, " << t[2]
             << " 2-2, " << t[3] << " 4-4 swaps, " << report.seconds << " s\n";
   const auto cmp = ES::compare_with_delaunay(tr);
   std::cout << "   Equal to CGAL's Delaunay_triangulation_3, cell for cell: " << (cmp.identical ? "yes" : "NO")
@@ -47,12 +45,12 @@ inline int run_demo(std::size_t n, unsigned int seed)
   Triangulation dt;
   ES::insert_delaunay(dt, points);
   const auto before = ES::mesh_statistics(dt);
-  options.face_order = ES::STORAGE_ORDER;
-  options.cycle_visitor = cycle_progress("min-edges");
-  const auto min_edges = CGAL::swap_edges(dt, ES::Min_edges_criterion(), options);
+  const auto min_edges = CGAL::swap_edges(
+    dt, ES::Min_edges_criterion(),
+    np::face_order(ES::STORAGE_ORDER, np::cycle_visitor(cycle_progress("min-edges"), CGAL::parameters::random_seed(seed))));
   const auto after = ES::mesh_statistics(dt);
   std::cout << "2. Minimum-edge swapping from the Delaunay triangulation: " << min_edges.total_swaps()[1]
-            << " 3-2 swaps in " << min_edges.number_of_cycles() << " cycles\n\n";
+            << " 3-2 swaps in " << min_edges.number_of_cycles() << " rounds\n\n";
   std::printf("           %10s %10s   %10s %10s\n", "ours", "", "paper", "");
   std::printf("           %10s %10s   %10s %10s\n", "before", "after", "before", "after");
   std::printf("   Nodes   %10zu %10zu   %10d %10d\n", before.vertices, after.vertices, 8000, 8000);

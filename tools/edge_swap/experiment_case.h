@@ -74,13 +74,15 @@ inline std::size_t scramble_flips(const std::string& start)
 
 namespace internal_experiment {
 
-inline ES::Swap_options swap_options(const Experiment_case& c)
+// The laboratory runs the paper's method as the paper states it: its cycles
+// over all facets, and no repair after a stuck state.
+inline auto swap_parameters(const Experiment_case& c)
 {
-  ES::Swap_options options;
-  options.face_order = (c.order == "storage") ? ES::STORAGE_ORDER : ES::RANDOM_ORDER;
-  options.random_seed = c.seed;
-  options.max_cycles = c.max_cycles;
-  return options;
+  namespace np = ES::parameters;
+  return np::schedule(ES::PAPER_CYCLES,
+                      np::face_order((c.order == "storage") ? ES::STORAGE_ORDER : ES::RANDOM_ORDER,
+                                     np::delaunay_repair(false, CGAL::parameters::random_seed(c.seed)
+                                                                  .number_of_iterations(c.max_cycles))));
 }
 
 inline void add_report(Experiment_outcome& o, const ES::Swap_report& r)
@@ -97,7 +99,7 @@ inline void run_insertion(Plain_triangulation& tr, const Experiment_case& c, Exp
 {
   const auto seq = ES::internal::basis_first(c.points, tr.geom_traits(),
                                              ES::internal::insertion_sequence<K>(c.points, ES::INPUT_ORDER));
-  const auto options = swap_options(c);
+  const auto options = swap_parameters(c);
   Plain_triangulation::Vertex_handle hint;
   for(std::size_t k : seq)
   {
@@ -146,7 +148,7 @@ inline Experiment_outcome run_case(const Experiment_case& c)
     }
     else
       throw Usage_error("unknown start '" + c.start + "' (placing, scramble:K, cells)");
-    const auto options = internal_experiment::swap_options(c);
+    const auto options = internal_experiment::swap_parameters(c);
     ES::Swap_report r;
     if(c.strategy == "plain")
       r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), options);

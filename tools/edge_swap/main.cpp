@@ -27,7 +27,9 @@ int main(int argc, char** argv)
   optimize->add_option("--order", opt.order, "face order: random (default) or storage");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
   optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none");
-  optimize->add_option("--max-cycles", opt.max_cycles, "cycle limit")->check(CLI::PositiveNumber);
+  optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);
+  optimize->add_option("--schedule", opt.schedule, "queue (default: only what changed) or cycles (the paper's)");
+  optimize->add_flag("--paper", opt.paper, "Delaunay: the paper's Algorithm 3 alone, no repair of a stuck state");
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 

@@ -15,8 +15,8 @@ namespace edge_swap {
 struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order = "random";
-  std::string perturb = "cgal", history, stats;
-  bool helper = false, start_given = false;
+  std::string perturb = "cgal", history, stats, schedule = "queue";
+  bool helper = false, start_given = false, paper = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
 };
@@ -69,6 +69,9 @@ inline int run_optimize(const Optimize_options& o)
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
   if(o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
+  if(o.schedule != "queue" && o.schedule != "cycles") throw Usage_error("--schedule is queue or cycles");
+  if(o.paper && o.criterion != "delaunay")
+    throw Usage_error("--paper turns off the Delaunay repair; it cannot go with --criterion " + o.criterion);
   if(o.start.rfind("scramble:", 0) == 0) whole_number(o.start.substr(9), "--start scramble:K");
 
   Input in = read_input(o.input);
@@ -87,32 +90,36 @@ inline int run_optimize(const Optimize_options& o)
   }
 
   const ES::Mesh_statistics before = ES::mesh_statistics(tr);
-  ES::Swap_options options;
-  options.face_order = (o.order == "random") ? ES::RANDOM_ORDER : ES::STORAGE_ORDER;
-  options.random_seed = o.seed;
-  options.max_cycles = o.max_cycles;
-  options.perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
-  options.record_non_delaunay_facets = !o.history.empty();
-  options.cycle_visitor = cycle_progress(o.helper ? "helper" : o.criterion);
+  namespace np = ES::parameters;
+  const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
+  const auto parameters = np::schedule(
+    o.schedule == "queue" ? ES::WORK_QUEUE : ES::PAPER_CYCLES,
+    np::face_order((o.order == "random") ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
+                   np::perturbation(perturbation,
+                                    np::record_non_delaunay_facets(!o.history.empty(),
+                                    np::cycle_visitor(cycle_progress(o.helper ? "helper" : o.criterion),
+                                    np::delaunay_repair(!o.paper, CGAL::parameters::random_seed(o.seed)
+                                                                    .number_of_iterations(o.max_cycles)))))));
 
   // A Medit mesh keeps its boundaries and subdomains; a point set or a
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
   const ES::Swap_report report = with_constraints(in, [&](const auto& constraints) {
-    if(o.helper) return CGAL::swap_edges_with_helper(tr, options, constraints);
-    return with_criterion(o.criterion, options.perturbation, [&](const auto& criterion) {
-      return CGAL::swap_edges(tr, criterion, options, constraints);
+    if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
+    return with_criterion(o.criterion, perturbation, [&](const auto& criterion) {
+      return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
     });
   });
   const ES::Mesh_statistics after = ES::mesh_statistics(tr);
+  const bool repairs = !o.helper && !o.paper && o.criterion == "delaunay";
 
   Output_files files;
   add_mesh_files(files, o.output, tr, in);
   if(!o.history.empty())
     files.add(o.history, [&report](std::ostream& out) {
-      out << "cycle,swaps_2_3,swaps_3_2,swaps_2_2,swaps_4_4,cells,non_delaunay_faces\n";
+      out << "cycle,swaps_2_3,swaps_3_2,swaps_2_2,swaps_4_4,cells,non_delaunay_faces,visits,new_tags\n";
       for(const auto& r : report.cycles)
         out << r.cycle << ',' << r.swaps[0] << ',' << r.swaps[1] << ',' << r.swaps[2] << ',' << r.swaps[3]
-            << ',' << r.cells << ',' << r.non_delaunay_facets << '\n';
+            << ',' << r.cells << ',' << r.non_delaunay_facets << ',' << r.visits << ',' << r.new_tags << '\n';
     });
   if(!o.stats.empty())
     files.add(o.stats, [&](std::ostream& out) {
@@ -124,16 +131,30 @@ inline int run_optimize(const Optimize_options& o)
                           {"cycles", report.number_of_cycles()},
                           {"swaps", {{"2-3", t[0]}, {"3-2", t[1]}, {"2-2", t[2]}, {"4-4", t[3]}}},
                           {"non_delaunay_faces", report.non_delaunay_facets},
+                          {"schedule", o.schedule},
+                          {"visits", report.number_of_visits()},
                           {"seconds", report.seconds}};
+      if(repairs)
+        j["delaunay_repair"] = {{"path", ES::delaunay_repair_path_name(report.repair_path)},
+                                {"stuck_after_plain_flips", report.stuck_after_plain_flips},
+                                {"helper_rounds", report.helper_rounds},
+                                {"rebuilt_cells", report.rebuilt_cells}};
       out << j.dump(2) << '\n';
     });
   files.commit();
 
   const auto t = report.total_swaps();
   std::cout << (o.helper ? "helper" : o.criterion) << ": " << ES::swap_ending_name(report.ending) << " after "
-            << report.number_of_cycles() << " cycles; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
+            << report.number_of_cycles() << " rounds; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
             << t[2] << ", 4-4 " << t[3] << "; cells " << before.cells << " -> " << after.cells << "; "
             << report.seconds << " s\n";
+  if(repairs && report.repair_path != ES::PLAIN_FLIPS)
+    std::cout << "delaunay repair: plain flips left " << report.stuck_after_plain_flips
+              << " faces not locally Delaunay; helper " << report.helper_rounds << " rounds"
+              << (report.repair_path == ES::REBUILT
+                    ? "; not converged, so the " + std::to_string(report.rebuilt_cells) + " cells were rebuilt"
+                    : std::string("; converged"))
+              << "\n";
   return 0;
 }
 

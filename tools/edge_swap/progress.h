@@ -3,7 +3,7 @@
 #ifndef EDGE_SWAP_PROGRESS_H
 #define EDGE_SWAP_PROGRESS_H
 
-#include <CGAL/Edge_swapping_3/Swap_options.h>
+#include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Real_timer.h>
 #include <iostream>
 #include <memory>

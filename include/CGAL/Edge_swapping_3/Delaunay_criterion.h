@@ -49,6 +49,7 @@ std::size_t number_of_non_delaunay_facets(const Tr& tr,
 /// (with the perturbation), so a swap always moves toward the Delaunay triangulation.
 struct Delaunay_criterion
 {
+  static constexpr bool is_delaunay_criterion = true;
   Perturbation perturbation = CGAL_PERTURBATION;
 
   Delaunay_criterion() = default;

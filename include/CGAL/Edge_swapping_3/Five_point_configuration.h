@@ -61,6 +61,16 @@ public:
   const Plan& flip_plan() const { return plan_; }
   Flip_kind flip_kind() const { return plan_.kind; }
 
+  /// Whether the answer also depends on the cells around one edge of the
+  /// facet (the 3-2 and the planar cases: how many cells the edge has); if so,
+  /// `a` and `b` are its vertices. Otherwise it depends on the two cells alone.
+  bool depends_on_edge_ring(Vertex_handle& a, Vertex_handle& b) const
+  {
+    a = ring_edge_[0];
+    b = ring_edge_[1];
+    return a != Vertex_handle();
+  }
+
   template <class T>
   friend Five_point_configuration<T> classify_facet(const T&, typename T::Cell_handle, int);
 
@@ -70,6 +80,7 @@ private:
   int index_ = 0;
   int n_tets_ = 0;
   std::array<Cell_handle, 4> tets_;
+  std::array<Vertex_handle, 2> ring_edge_;
   Plan plan_;
 };
 
@@ -142,6 +153,7 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
     edge_opposite(k_neg, a, b);
     const Cell_handle t = c->neighbor(k_neg);
     conf.kind_ = CONCAVE;
+    conf.ring_edge_ = {c->vertex(a), c->vertex(b)};
     if(t->has_vertex(e))
     {
       // Old cells in turning order around the edge, as CGAL's circulator gives them.
@@ -165,6 +177,7 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
     edge_opposite(k_zero, a, b);
     internal::Edge_ring<Tr> ring(tr, c, a, b);
     conf.kind_ = PLANAR_UNSWAPPABLE;
+    conf.ring_edge_ = {c->vertex(a), c->vertex(b)};
     if(ring.size() == 4 && ring.plan_flip(plan, ring.diagonal_through(c->vertex(i), e)) &&
        worst_orientation(tr, plan) == POSITIVE)
       conf.kind_ = (plan.kind == FLIP_2_2) ? PLANAR_HULL_TWO_TWO : PLANAR_FOUR_FOUR;

@@ -1,0 +1,109 @@
+// What a swap driver reports: the rounds it made, how it ended, and, for the
+// Delaunay repair, which path it took.
+
+#ifndef CGAL_EDGE_SWAPPING_3_SWAP_REPORT_H
+#define CGAL_EDGE_SWAPPING_3_SWAP_REPORT_H
+
+#include <CGAL/Edge_swapping_3/Flip_plan.h>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// How a driver finds the facets to visit.
+enum Schedule
+{
+  /// Visits every interior facet once, then only the facets whose
+  /// configuration (or, for the helper, the tags of whose cells) changed since
+  /// their last visit. A round ends when the facets queued before it are done.
+  WORK_QUEUE,
+  /// The paper's cycles: every round visits every interior facet that existed
+  /// when it began and still exists when its turn comes.
+  PAPER_CYCLES
+};
+
+/// The order of the visits within a round.
+enum Face_order
+{
+  STORAGE_ORDER, ///< the order of the cells in the triangulation's container, then of the queue
+  RANDOM_ORDER   ///< a uniform random permutation of each round, drawn from `random_seed`
+};
+
+/// What one round (one cycle of the paper) did.
+struct Cycle_record
+{
+  std::size_t cycle = 0;                                  ///< 1 for the first round
+  std::array<std::size_t, number_of_flip_kinds> swaps{};  ///< indexed by `Flip_kind`
+  std::size_t visits = 0;                                 ///< facets visited
+  std::size_t new_tags = 0;                               ///< helper: cells tagged in this round
+  std::size_t cells = 0;                                  ///< finite cells after the round
+  long long non_delaunay_facets = -1;                     ///< after the round; -1 if not recorded
+
+  std::size_t total_swaps() const { return swaps[0] + swaps[1] + swaps[2] + swaps[3]; }
+};
+
+enum Swap_ending
+{
+  CONVERGED,           ///< nothing left to do (for Delaunay: and every facet is Delaunay)
+  STUCK,               ///< Delaunay only: no swap possible, but some facet is not Delaunay
+  CYCLE_LIMIT_REACHED  ///< still swapping after `number_of_iterations` rounds (possibly cycling)
+};
+
+inline const char* swap_ending_name(Swap_ending e)
+{
+  static const char* names[] = {"converged", "stuck", "cycle limit reached"};
+  return names[e];
+}
+
+/// The steps of the Delaunay repair of `swap_edges`, in the order it tries them.
+enum Delaunay_repair_path
+{
+  PLAIN_FLIPS,   ///< Algorithm 3 with the Delaunay criterion reached the Delaunay triangulation
+  HELPER_FLIPS,  ///< plain flips were stuck; the helper strategy finished the work
+  REBUILT        ///< the helper had not converged within its bound; the cells were rebuilt
+};
+
+inline const char* delaunay_repair_path_name(Delaunay_repair_path p)
+{
+  static const char* names[] = {"plain flips", "helper flips", "rebuilt"};
+  return names[p];
+}
+
+struct Swap_report
+{
+  std::vector<Cycle_record> cycles;
+  Swap_ending ending = CONVERGED;
+  /// Facets not locally Delaunay at the end (Delaunay criterion and helper only; else -1).
+  long long non_delaunay_facets = -1;
+  double seconds = 0;
+
+  /// Delaunay repair only: the last step taken, the non-Delaunay facets that
+  /// plain flips left, the rounds of the helper step, and the finite cells
+  /// the rebuild replaced (0 if it was not needed).
+  Delaunay_repair_path repair_path = PLAIN_FLIPS;
+  long long stuck_after_plain_flips = 0;
+  std::size_t helper_rounds = 0;
+  std::size_t rebuilt_cells = 0;
+
+  std::size_t number_of_cycles() const { return cycles.size(); }
+  std::size_t number_of_visits() const
+  {
+    std::size_t n = 0;
+    for(const auto& c : cycles) n += c.visits;
+    return n;
+  }
+  std::array<std::size_t, number_of_flip_kinds> total_swaps() const
+  {
+    std::array<std::size_t, number_of_flip_kinds> t{};
+    for(const auto& c : cycles)
+      for(int k = 0; k < number_of_flip_kinds; ++k) t[k] += c.swaps[k];
+    return t;
+  }
+};
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_SWAP_REPORT_H

@@ -1,0 +1,396 @@
+// The schedule and the ending shared by the swap drivers; the rule (what a
+// visit of a facet decides) is the caller's. Two schedules:
+//  - the paper's cycles: each round lists every interior facet and visits those
+//    that still exist when their turn comes;
+//  - a work queue: the first round visits every interior facet, later rounds
+//    only the facets whose configuration or tags changed since their last
+//    visit, so a round costs what the flips before it changed.
+// Driver state (the helper's tags, the queue) is kept here, indexed by cell
+// or facet, never in the TDS marks that CGAL's own traversals clear.
+
+#ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
+#define CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
+
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/internal/facet_key.h>
+#include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <functional>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+namespace internal {
+
+struct Driver_settings
+{
+  Schedule schedule = WORK_QUEUE;
+  Face_order face_order = RANDOM_ORDER;
+  unsigned int random_seed = 0;
+  std::size_t max_rounds = 1000;
+  bool record_non_delaunay_facets = false;
+  Perturbation perturbation = CGAL_PERTURBATION;
+  std::function<void(const Cycle_record&)> cycle_visitor;
+};
+
+/// A uniform random permutation (Fisher-Yates) drawn from `rng`.
+template <class Vector>
+void shuffle_uniformly(Vector& items, CGAL::Random& rng)
+{
+  for(std::size_t k = items.size(); k > 1; --k)
+    std::swap(items[k - 1], items[std::size_t(rng.get_int(0, int(k)))]);
+}
+
+/// Of the two finite cells of an interior facet, the one whose opposite vertex
+/// is lexicographically smaller holds it: the choice never depends on addresses.
+template <class Tr>
+bool holds_facet(const Tr& tr, typename Tr::Cell_handle c, int i)
+{
+  const auto n = c->neighbor(i);
+  if(tr.is_infinite(c) || tr.is_infinite(n)) return false;
+  const auto m = n->vertex(n->index(c));
+  return tr.geom_traits().compare_xyz_3_object()(c->vertex(i)->point(), m->point()) == SMALLER;
+}
+
+template <class Tr, class Constraints, class Visitor>
+class Swap_driver
+{
+public:
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef Facet_key<Tr> Key;
+  typedef Edge_key<Tr> Edge;
+  typedef Five_point_configuration<Tr> Configuration;
+
+  Swap_driver(Tr& tr, const Driver_settings& settings, const Constraints& constraints, Visitor& visitor)
+    : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed)
+  {}
+
+  Tr& triangulation() { return tr_; }
+  const Constraints& constraints() const { return constraints_; }
+  Perturbation perturbation() const { return settings_.perturbation; }
+
+  // ---- what a rule calls ----
+
+  bool is_tagged(Cell_handle c) const { return !tags_.empty() && tags_.contains(c); }
+
+  /// Tags `c` (the helper); a new tag queues the facets whose visit it may change.
+  void tag(Cell_handle c)
+  {
+    if(!tags_.insert(c)) return;
+    ++record_.new_tags;
+    if(!queueing_) return;
+    for(int i = 0; i < 4; ++i) facet_changed(c, i);
+    if(!registered_.empty())
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j) push_registered(c->vertex(i), c->vertex(j));
+  }
+
+  /// Makes the flip of a swappable, fresh configuration; returns its kind.
+  int flip(const Configuration& conf)
+  {
+    const auto& plan = conf.flip_plan();
+    visitor_.before_flip(tr_, plan);
+    // The facets between two old cells disappear (unless the flip makes them again).
+    for(int k = 0; k < plan.number_of_old_cells; ++k)
+    {
+      const Cell_handle c = plan.old_cells[k];
+      if(!tags_.empty()) tags_.erase(c);
+      if(first_round_) touched_.insert(c);
+      for(int i = 0; i < 4; ++i)
+        if(is_old_cell(plan, c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i)))
+          forget_facet(facet_key<Tr>(c, i));
+    }
+    std::array<Cell_handle, 4> created;
+    const int n = execute_flip(tr_, plan, created, constraints_);
+    visitor_.after_flip(tr_, plan, created, n);
+    for(int k = 0; k < n; ++k)
+    {
+      if(first_round_) touched_.insert(created[k]);
+      for(int i = 0; i < 4; ++i) facet_changed(created[k], i);
+    }
+    if(queueing_ && !registered_.empty())
+      for(int k = 0; k < n; ++k)
+        for(int i = 0; i < 4; ++i)
+          for(int j = i + 1; j < 4; ++j) push_registered(created[k]->vertex(i), created[k]->vertex(j));
+    ++record_.swaps[plan.kind];
+    return int(plan.kind);
+  }
+
+  /// A visit that made no swap: `non_delaunay` says the facet is not locally
+  /// Delaunay; `all_edges` asks to be visited again when the cells around any
+  /// of its edges change (else only around the edge its configuration looked at).
+  void keep(const Configuration& conf, bool non_delaunay, bool all_edges)
+  {
+    if(!queueing_) return;
+    const Cell_handle c = conf.cell();
+    const int i = conf.index();
+    if(non_delaunay) kept_.insert(facet_key<Tr>(c, i));
+    Vertex_handle a, b;
+    if(all_edges)
+    {
+      for(int k = 1; k < 4; ++k)
+        for(int m = k + 1; m < 4; ++m) register_facet(c->vertex((i + k) & 3), c->vertex((i + m) & 3), c, i);
+    }
+    else if(conf.depends_on_edge_ring(a, b))
+      register_facet(a, b, c, i);
+  }
+
+  // ---- the schedules ----
+
+  /// `visit(driver, c, i)` decides one interior facet.
+  template <class Rule>
+  Swap_report run(Rule& visit)
+  {
+    CGAL_precondition(tr_.dimension() == 3);
+    CGAL::Real_timer timer;
+    timer.start();
+    Swap_report report = (settings_.schedule == WORK_QUEUE) ? run_work_queue(visit) : run_cycles(visit);
+    report.seconds = timer.time();
+    return report;
+  }
+
+  /// After a work-queue run: the facets that were not locally Delaunay at
+  /// their last visit and still are (exact), plus the hull facets.
+  std::size_t number_of_non_delaunay_facets_left() const
+  {
+    std::size_t n = 0;
+    kept_.for_each([&](const Key& key) {
+      Cell_handle c;
+      int i;
+      if(find_facet(tr_, key, c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
+    });
+    std::vector<Cell_handle> outside;
+    tr_.incident_cells(tr_.infinite_vertex(), std::back_inserter(outside));
+    for(Cell_handle c : outside)
+      for(int i = 0; i < 4; ++i)
+      {
+        const Cell_handle d = c->neighbor(i);
+        if(tr_.is_infinite(d) && address_of(d) < address_of(c)) continue; // counted from d
+        if(!is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
+      }
+    return n;
+  }
+
+private:
+  static bool is_old_cell(const Flip_plan<Tr>& plan, Cell_handle c)
+  {
+    for(int k = 0; k < plan.number_of_old_cells; ++k)
+      if(plan.old_cells[k] == c) return true;
+    return false;
+  }
+
+  /// A facet that a flip destroyed: out of the queue (or, in a cycle, known dead).
+  void forget_facet(const Key& key)
+  {
+    if(!kept_.empty()) kept_.erase(key);
+    if(queueing_)
+      queued_.erase(key);
+    else
+      moved_[key] = Cell_handle();
+  }
+
+  /// A facet of a new (or newly tagged) cell: queued with that cell as its
+  /// hint, or, in a cycle, found there when its turn comes.
+  void facet_changed(Cell_handle c, int i)
+  {
+    if(!queueing_)
+    {
+      moved_[facet_key<Tr>(c, i)] = c;
+      return;
+    }
+    if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) return;
+    const Key key = facet_key<Tr>(c, i);
+    if(key == current_) return; // the visit under way has seen it
+    const auto done = queued_.emplace(key, c);
+    if(done.second)
+      next_.push_back(key);
+    else
+      *done.first = c;
+  }
+
+  /// The facet of a listed or queued key: its hint when no flip changed it,
+  /// else where the last flip put it. It is then seen from the cell that holds
+  /// it (`holds_facet`): the helper's tags depend on the side a facet is
+  /// classified from, and the side must not depend on the flips' history.
+  bool locate(const Key& key, Cell_handle hint, Cell_handle& c, int& i) const
+  {
+    Key k = key;
+    k.hint = hint;
+    const bool found = find_facet(tr_, k, c, i);
+    CGAL_assertion(found);
+    if(found && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) && !holds_facet(tr_, c, i))
+    {
+      const Cell_handle n = c->neighbor(i);
+      i = n->index(c);
+      c = n;
+    }
+    return found;
+  }
+
+  void register_facet(Vertex_handle a, Vertex_handle b, Cell_handle c, int i)
+  {
+    registered_[edge_key<Tr>(a, b)].push_back(facet_key<Tr>(c, i));
+  }
+
+  /// Queues the facets registered on edge `(a, b)`, whose cells changed.
+  void push_registered(Vertex_handle a, Vertex_handle b)
+  {
+    if(registered_.empty()) return;
+    const Edge edge = edge_key<Tr>(a, b);
+    const std::vector<Key>* facets = registered_.find(edge);
+    if(facets == nullptr) return;
+    for(const Key& key : *facets)
+      if(!(key == current_) && queued_.emplace(key, key.hint).second) next_.push_back(key);
+    registered_.erase(edge);
+  }
+
+  template <class Rule>
+  void visit_facet(Rule& visit, Cell_handle c, int i)
+  {
+    ++record_.visits;
+    visit(*this, c, i);
+  }
+
+  void end_round(Swap_report& report)
+  {
+    record_.cells = tr_.number_of_finite_cells();
+    if(settings_.record_non_delaunay_facets)
+      record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
+    report.cycles.push_back(record_);
+    if(settings_.cycle_visitor) settings_.cycle_visitor(record_);
+  }
+
+  template <class Rule>
+  Swap_report run_cycles(Rule& visit)
+  {
+    queueing_ = false;
+    Swap_report report;
+    report.ending = CYCLE_LIMIT_REACHED;
+    std::vector<Key> facets;
+    for(std::size_t round = 1; round <= settings_.max_rounds; ++round)
+    {
+      record_ = Cycle_record();
+      record_.cycle = round;
+      facets.clear();
+      facets.reserve(2 * tr_.number_of_cells());
+      for(Cell_handle c : tr_.finite_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(holds_facet(tr_, c, i)) facets.push_back(facet_key<Tr>(c, i));
+      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(facets, rng_);
+      moved_.clear();
+      for(const Key& key : facets)
+      {
+        Cell_handle hint = key.hint;
+        if(!moved_.empty())
+        {
+          if(const Cell_handle* moved = moved_.find(key)) hint = *moved;
+        }
+        Cell_handle c;
+        int i;
+        if(hint == Cell_handle() || !locate(key, hint, c, i)) continue; // a flip destroyed it
+        if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
+        visit_facet(visit, c, i);
+      }
+      end_round(report);
+      // A round that tagged a cell changed what the next would do.
+      if(record_.total_swaps() == 0 && record_.new_tags == 0)
+      {
+        report.ending = CONVERGED;
+        break;
+      }
+    }
+    return report;
+  }
+
+  template <class Rule>
+  Swap_report run_work_queue(Rule& visit)
+  {
+    queueing_ = true;
+    Swap_report report;
+    report.ending = CYCLE_LIMIT_REACHED;
+
+    // Round 1: every interior facet, cell by cell. A cell that a flip touched
+    // is skipped: its facets that still exist are queued for round 2.
+    {
+      first_round_ = true;
+      record_ = Cycle_record();
+      record_.cycle = 1;
+      std::vector<Cell_handle> cells;
+      cells.reserve(tr_.number_of_finite_cells());
+      for(Cell_handle c : tr_.finite_cell_handles()) cells.push_back(c);
+      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(cells, rng_);
+      for(Cell_handle c : cells)
+        for(int i = 0; i < 4; ++i)
+        {
+          if(!touched_.empty() && touched_.contains(c)) break;
+          if(!holds_facet(tr_, c, i)) continue;
+          current_ = facet_key<Tr>(c, i);
+          visit_facet(visit, c, i);
+        }
+      current_ = Key();
+      first_round_ = false;
+      touched_.clear();
+      end_round(report);
+    }
+
+    std::vector<Key> round;
+    for(std::size_t r = 2; r <= settings_.max_rounds + 1; ++r)
+    {
+      if(next_.empty())
+      {
+        report.ending = CONVERGED;
+        break;
+      }
+      if(r > settings_.max_rounds) break;
+      round.swap(next_);
+      next_.clear();
+      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(round, rng_);
+      record_ = Cycle_record();
+      record_.cycle = r;
+      for(const Key& key : round)
+      {
+        const Cell_handle* queued = queued_.find(key);
+        if(queued == nullptr) continue; // destroyed, or visited already in this round
+        const Cell_handle hint = *queued;
+        queued_.erase(key);
+        Cell_handle c;
+        int i;
+        if(!locate(key, hint, c, i)) continue;
+        if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
+        current_ = key;
+        visit_facet(visit, c, i);
+      }
+      current_ = Key();
+      end_round(report);
+    }
+    return report;
+  }
+
+  Tr& tr_;
+  const Driver_settings& settings_;
+  const Constraints& constraints_;
+  Visitor& visitor_;
+  CGAL::Random rng_;
+  Cycle_record record_;
+  bool queueing_ = false;
+  bool first_round_ = false;
+
+  Flat_hash_set<Cell_handle, Handle_hash> tags_;
+  Flat_hash_set<Cell_handle, Handle_hash> touched_;            // round 1: cells flips changed
+  std::vector<Key> next_;                                      // the next round, in queueing order
+  Flat_hash_map<Key, Cell_handle, Facet_key_hash> queued_;     // queued, not yet visited: a cell that holds it
+  Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_;      // a cycle: facets flips changed (null: destroyed)
+  Flat_hash_set<Key, Facet_key_hash> kept_;                    // not Delaunay at their last visit
+  Flat_hash_map<Edge, std::vector<Key>, Edge_key_hash> registered_; // visit again when the edge's cells change
+  Key current_;
+};
+
+} // namespace internal
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H

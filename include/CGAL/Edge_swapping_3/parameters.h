@@ -1,0 +1,68 @@
+// The package's own named parameters. CGAL's (`number_of_iterations`,
+// `random_seed`, `visitor`, ...) are used as they are; these add the
+// package's settings in the same convention, each in two forms:
+//   ES::parameters::face_order(ES::RANDOM_ORDER).random_seed(3)
+//   ES::parameters::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(3))
+
+#ifndef CGAL_EDGE_SWAPPING_3_PARAMETERS_H
+#define CGAL_EDGE_SWAPPING_3_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+namespace internal_np {
+
+enum schedule_t { schedule };
+enum face_order_t { face_order };
+enum perturbation_t { perturbation };
+enum record_non_delaunay_facets_t { record_non_delaunay_facets };
+enum cycle_visitor_t { cycle_visitor };
+enum mesh_constraints_t { mesh_constraints };
+enum delaunay_repair_t { delaunay_repair };
+enum helper_rounds_before_rebuild_t { helper_rounds_before_rebuild };
+
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_EDGE_SWAPPING_3_PARAMETER(NAME)                                                                 \
+  template <class T>                                                                                       \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)                          \
+  {                                                                                                        \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);                              \
+  }                                                                                                        \
+  template <class T, class T2, class Tag, class Base>                                                     \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t, CGAL::Named_function_parameters<T2, Tag, Base>> \
+  NAME(const T& value, const CGAL::Named_function_parameters<T2, Tag, Base>& np)                          \
+  {                                                                                                        \
+    return {value, np};                                                                                    \
+  }
+
+/// `Schedule`: the work queue (default) or the paper's cycles.
+CGAL_EDGE_SWAPPING_3_PARAMETER(schedule)
+/// `Face_order`: the order of visits within a round (default `RANDOM_ORDER`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(face_order)
+/// `Perturbation`: the tie-breaking of the helper's Delaunay tests (default `CGAL_PERTURBATION`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(perturbation)
+/// `bool`: count the non-Delaunay facets after each round (a full pass; default false).
+CGAL_EDGE_SWAPPING_3_PARAMETER(record_non_delaunay_facets)
+/// A callable `void(const Cycle_record&)`, called after each round.
+CGAL_EDGE_SWAPPING_3_PARAMETER(cycle_visitor)
+/// A model of `MeshConstraints_3` (default `No_constraints`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(mesh_constraints)
+/// `bool`: whether `swap_edges` with the Delaunay criterion goes on from a
+/// stuck state to the helper and then to a rebuild (default true); false
+/// gives the paper's Algorithm 3 alone.
+CGAL_EDGE_SWAPPING_3_PARAMETER(delaunay_repair)
+/// `std::size_t`: the rounds the helper step of the Delaunay repair may take
+/// before the rebuild (default 100).
+CGAL_EDGE_SWAPPING_3_PARAMETER(helper_rounds_before_rebuild)
+
+#undef CGAL_EDGE_SWAPPING_3_PARAMETER
+
+} // namespace parameters
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_PARAMETERS_H
