@@ -120,12 +120,11 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& 
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using CGAL::parameters::get_parameter_reference;
-  const auto& constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
-  Default_flip_visitor default_visitor;
-  auto&& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-  typedef std::remove_const_t<std::remove_reference_t<decltype(constraints)>> Constraints;
-  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  // Copies, as CGAL does: a visitor keeps its state behind a pointer or std::ref.
+  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor());
+  typedef std::remove_const_t<decltype(constraints)> Constraints;
+  typedef decltype(visitor) Visitor;
   Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
   Helper_rule rule;
   Swap_report report = driver.run(rule);
@@ -169,16 +168,15 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
   namespace ES = Edge_swapping_3;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  using CGAL::parameters::get_parameter_reference;
   constexpr bool delaunay = ES::internal::Is_delaunay_criterion<Criterion>::value;
 
   ES::internal::Driver_settings s = ES::internal::driver_settings(np);
   if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
-  const auto& constraints = choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints), ES::No_constraints());
-  ES::Default_flip_visitor default_visitor;
-  auto&& visitor = choose_parameter(get_parameter_reference(np, CGAL::internal_np::visitor), default_visitor);
-  typedef std::remove_const_t<std::remove_reference_t<decltype(constraints)>> Constraints;
-  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  // Copies, as CGAL does: a visitor keeps its state behind a pointer or std::ref.
+  const auto constraints = choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints), ES::No_constraints());
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), ES::Default_flip_visitor());
+  typedef std::remove_const_t<decltype(constraints)> Constraints;
+  typedef decltype(visitor) Visitor;
 
   ES::internal::Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
   ES::internal::Criterion_rule<Criterion> rule{criterion};

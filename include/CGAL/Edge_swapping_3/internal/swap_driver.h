@@ -36,6 +36,12 @@ struct Driver_settings
   std::function<void(const Cycle_record&)> cycle_visitor;
 };
 
+/// A visitor given by value or through `std::ref`.
+template <class T>
+T& unwrap(T& t) { return t; }
+template <class T>
+T& unwrap(std::reference_wrapper<T> r) { return r.get(); }
+
 /// A uniform random permutation (Fisher-Yates) drawn from `rng`.
 template <class Vector>
 void shuffle_uniformly(Vector& items, CGAL::Random& rng)
@@ -93,7 +99,7 @@ public:
   int flip(const Configuration& conf)
   {
     const auto& plan = conf.flip_plan();
-    visitor_.before_flip(tr_, plan);
+    unwrap(visitor_).before_flip(tr_, plan);
     // The facets between two old cells disappear (unless the flip makes them again).
     for(int k = 0; k < plan.number_of_old_cells; ++k)
     {
@@ -106,7 +112,7 @@ public:
     }
     std::array<Cell_handle, 4> created;
     const int n = execute_flip(tr_, plan, created, constraints_);
-    visitor_.after_flip(tr_, plan, created, n);
+    unwrap(visitor_).after_flip(tr_, plan, created, n);
     for(int k = 0; k < n; ++k)
     {
       if(first_round_) touched_.insert(created[k]);
