@@ -34,14 +34,15 @@ struct Is_delaunay_criterion : std::false_type {};
 template <class C>
 struct Is_delaunay_criterion<C, std::enable_if_t<C::is_delaunay_criterion>> : std::true_type {};
 
+/// The settings from `np`; `default_order` when it names no face order.
 template <class NamedParameters>
-Driver_settings driver_settings(const NamedParameters& np)
+Driver_settings driver_settings(const NamedParameters& np, Face_order default_order)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Driver_settings s;
   s.schedule = choose_parameter(get_parameter(np, internal_np::schedule), WORK_QUEUE);
-  s.face_order = choose_parameter(get_parameter(np, internal_np::face_order), RANDOM_ORDER);
+  s.face_order = choose_parameter(get_parameter(np, internal_np::face_order), default_order);
   s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
   s.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
   s.record_non_delaunay_facets = choose_parameter(get_parameter(np, internal_np::record_non_delaunay_facets), false);
@@ -151,7 +152,8 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& 
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{schedule} `WORK_QUEUE` (default) or `PAPER_CYCLES` \cgalParamNEnd
-///   \cgalParamNBegin{face_order} `RANDOM_ORDER` (default) or `STORAGE_ORDER` \cgalParamNEnd
+///   \cgalParamNBegin{face_order} `STORAGE_ORDER` (default: keeps memory locality) or `RANDOM_ORDER`;
+///     the helper step of the repair is in `RANDOM_ORDER` unless this is given \cgalParamNEnd
 ///   \cgalParamNBegin{random_seed} `unsigned int`, default 0 \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the round limit, default 1000 \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `FlipVisitor_3`, default `Default_flip_visitor` \cgalParamNEnd
@@ -170,7 +172,7 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
   using CGAL::parameters::get_parameter;
   constexpr bool delaunay = ES::internal::Is_delaunay_criterion<Criterion>::value;
 
-  ES::internal::Driver_settings s = ES::internal::driver_settings(np);
+  ES::internal::Driver_settings s = ES::internal::driver_settings(np, ES::STORAGE_ORDER);
   if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
   // Copies, as CGAL does: a visitor keeps its state behind a pointer or std::ref.
   const auto constraints = choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints), ES::No_constraints());
@@ -189,7 +191,8 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 
     // Stuck (or out of rounds): the helper, then the rebuild.
     report.stuck_after_plain_flips = report.non_delaunay_facets;
-    ES::internal::Driver_settings hs = s;
+    ES::internal::Driver_settings hs = ES::internal::driver_settings(np, ES::RANDOM_ORDER);
+    hs.perturbation = criterion.perturbation;
     hs.max_rounds = choose_parameter(get_parameter(np, ES::internal_np::helper_rounds_before_rebuild), std::size_t(100));
     ES::Swap_report helper = ES::internal::run_helper(tr, hs, np);
     report.repair_path = ES::HELPER_FLIPS;
@@ -226,10 +229,12 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 ///
 /// Named parameters as `swap_edges`, plus `perturbation` (the tie-breaking of
 /// its Delaunay tests, default `CGAL_PERTURBATION`); no `delaunay_repair`.
+/// Its default face order is `RANDOM_ORDER`: in storage order it can loop
+/// (doc/Edge_swapping_3/findings.md).
 template <class Tr, class NamedParameters = parameters::Default_named_parameters>
 Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr, const NamedParameters& np = parameters::default_values())
 {
-  return Edge_swapping_3::internal::run_helper(tr, Edge_swapping_3::internal::driver_settings(np), np);
+  return Edge_swapping_3::internal::run_helper(tr, Edge_swapping_3::internal::driver_settings(np, Edge_swapping_3::RANDOM_ORDER), np);
 }
 
 } // namespace CGAL

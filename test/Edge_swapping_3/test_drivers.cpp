@@ -322,7 +322,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
     Tr tr;
     start(tr);
     const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
-                                    np::delaunay_repair(false, np::schedule(ES::PAPER_CYCLES, CGAL::parameters::random_seed(c.seed))));
+                                    np::delaunay_repair(false, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed)))));
     REQUIRE(r.ending == ES::STUCK);
     REQUIRE(r.repair_path == ES::PLAIN_FLIPS);
   }
@@ -330,7 +330,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
   {
     Tr tr;
     start(tr);
-    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, CGAL::parameters::random_seed(c.seed)));
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed))));
     REQUIRE(r.ending == ES::CONVERGED);
     REQUIRE(r.repair_path == ES::HELPER_FLIPS);
     REQUIRE(r.stuck_after_plain_flips > 0);
@@ -345,7 +345,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
     std::set<const void*> vertices; // the vertices themselves (and so their data) stay
     for(auto v : tr.finite_vertex_handles()) vertices.insert(&*v);
     const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
-                                    np::helper_rounds_before_rebuild(0, np::schedule(ES::PAPER_CYCLES, CGAL::parameters::random_seed(c.seed))));
+                                    np::helper_rounds_before_rebuild(0, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed)))));
     REQUIRE(r.ending == ES::CONVERGED);
     REQUIRE(r.repair_path == ES::REBUILT);
     REQUIRE(r.rebuilt_cells == tr.number_of_finite_cells());

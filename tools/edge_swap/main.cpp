@@ -24,7 +24,7 @@ int main(int argc, char** argv)
   optimize->add_option("--criterion", opt.criterion, "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");
-  optimize->add_option("--order", opt.order, "face order: random (default) or storage");
+  optimize->add_option("--order", opt.order, "face order: storage or random (default: storage; random with --helper)");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
   optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none");
   optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);

@@ -14,7 +14,7 @@ namespace edge_swap {
 
 struct Optimize_options
 {
-  std::string input, output, criterion = "delaunay", start = "placing", order = "random";
+  std::string input, output, criterion = "delaunay", start = "placing", order;
   std::string perturb = "cgal", history, stats, schedule = "queue";
   bool helper = false, start_given = false, paper = false;
   unsigned int seed = 0;
@@ -68,7 +68,7 @@ inline int run_optimize(const Optimize_options& o)
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
-  if(o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
+  if(!o.order.empty() && o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
   if(o.schedule != "queue" && o.schedule != "cycles") throw Usage_error("--schedule is queue or cycles");
   if(o.paper && o.criterion != "delaunay")
     throw Usage_error("--paper turns off the Delaunay repair; it cannot go with --criterion " + o.criterion);
@@ -94,7 +94,8 @@ inline int run_optimize(const Optimize_options& o)
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
   const auto parameters = np::schedule(
     o.schedule == "queue" ? ES::WORK_QUEUE : ES::PAPER_CYCLES,
-    np::face_order((o.order == "random") ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
+    // The library's defaults: storage order, but random for the helper (which can loop in storage order).
+    np::face_order((o.order == "random" || (o.order.empty() && o.helper)) ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
                    np::perturbation(perturbation,
                                     np::record_non_delaunay_facets(!o.history.empty(),
                                     np::cycle_visitor(cycle_progress(o.helper ? "helper" : o.criterion),

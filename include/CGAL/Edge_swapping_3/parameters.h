@@ -41,7 +41,7 @@ namespace parameters {
 
 /// `Schedule`: the work queue (default) or the paper's cycles.
 CGAL_EDGE_SWAPPING_3_PARAMETER(schedule)
-/// `Face_order`: the order of visits within a round (default `RANDOM_ORDER`).
+/// `Face_order`: the order of visits within a round (default `STORAGE_ORDER`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(face_order)
 /// `Perturbation`: the tie-breaking of the helper's Delaunay tests (default `CGAL_PERTURBATION`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(perturbation)

@@ -36,7 +36,6 @@ struct Facet_key
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   Vertex_handle u, v, w; ///< address order
-  Cell_handle hint;      ///< a cell that held the facet when the key was made
 
   friend bool operator==(const Facet_key& a, const Facet_key& b) { return a.u == b.u && a.v == b.v && a.w == b.w; }
 };
@@ -48,7 +47,7 @@ Facet_key<Tr> facet_key(typename Tr::Cell_handle c, int i)
                                                  c->vertex((i + 3) & 3)};
   auto less = [](typename Tr::Vertex_handle a, typename Tr::Vertex_handle b) { return address_of(a) < address_of(b); };
   std::sort(t.begin(), t.end(), less);
-  return {t[0], t[1], t[2], c};
+  return {t[0], t[1], t[2]};
 }
 
 struct Facet_key_hash
@@ -84,11 +83,13 @@ struct Edge_key_hash
   }
 };
 
-/// Finds facet `key` in the triangulation, exactly: first in its hint cell and
-/// the hint's neighbours (the usual case, O(1)), else among the cells around
-/// its first vertex. False exactly when no cell of `tr` has the three vertices.
+/// Finds facet `key` in the triangulation, exactly: first in the `hint` cell
+/// (one that held it once) and its neighbours (the usual case, O(1)), else
+/// among the cells around its first vertex. False exactly when no cell of
+/// `tr` has the three vertices.
 template <class Tr>
-bool find_facet(const Tr& tr, const Facet_key<Tr>& key, typename Tr::Cell_handle& c, int& i)
+bool find_facet(const Tr& tr, const Facet_key<Tr>& key, typename Tr::Cell_handle hint,
+                typename Tr::Cell_handle& c, int& i)
 {
   auto holds = [&](typename Tr::Cell_handle d) {
     int a, b, e;
@@ -98,11 +99,11 @@ bool find_facet(const Tr& tr, const Facet_key<Tr>& key, typename Tr::Cell_handle
     return true;
   };
   const auto& cells = tr.tds().cells();
-  if(key.hint != typename Tr::Cell_handle() && cells.is_used(key.hint))
+  if(hint != typename Tr::Cell_handle() && cells.is_used(hint))
   {
-    if(holds(key.hint)) return true;
+    if(holds(hint)) return true;
     for(int k = 0; k < 4; ++k)
-      if(holds(key.hint->neighbor(k))) return true;
+      if(holds(hint->neighbor(k))) return true;
   }
   int a, b, e;
   if(!tr.tds().is_facet(key.u, key.v, key.w, c, a, b, e)) return false;

@@ -28,7 +28,7 @@ namespace internal {
 struct Driver_settings
 {
   Schedule schedule = WORK_QUEUE;
-  Face_order face_order = RANDOM_ORDER;
+  Face_order face_order = STORAGE_ORDER;
   unsigned int random_seed = 0;
   std::size_t max_rounds = 1000;
   bool record_non_delaunay_facets = false;
@@ -68,6 +68,11 @@ public:
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef Facet_key<Tr> Key;
+  struct Listed
+  {
+    Key key;
+    Cell_handle hint; // a cell that held the facet when it was listed
+  };
   typedef Edge_key<Tr> Edge;
   typedef Five_point_configuration<Tr> Configuration;
 
@@ -99,6 +104,7 @@ public:
   int flip(const Configuration& conf)
   {
     const auto& plan = conf.flip_plan();
+    current_cell_ = Cell_handle(); // the flip destroys the facet under visit, and may reuse its cell
     unwrap(visitor_).before_flip(tr_, plan);
     // The facets between two old cells disappear (unless the flip makes them again).
     for(int k = 0; k < plan.number_of_old_cells; ++k)
@@ -167,7 +173,7 @@ public:
     kept_.for_each([&](const Key& key) {
       Cell_handle c;
       int i;
-      if(find_facet(tr_, key, c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
+      if(find_facet(tr_, key, Cell_handle(), c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
     });
     std::vector<Cell_handle> outside;
     tr_.incident_cells(tr_.infinite_vertex(), std::back_inserter(outside));
@@ -188,6 +194,15 @@ private:
       if(plan.old_cells[k] == c) return true;
     return false;
   }
+
+  bool is_current(Cell_handle c, int i) const
+  {
+    if(current_cell_ == Cell_handle()) return false;
+    return (c == current_cell_ && i == current_index_) ||
+           (c->neighbor(i) == current_cell_ && current_cell_->neighbor(current_index_) == c);
+  }
+
+  Key current_key() const { return current_cell_ == Cell_handle() ? Key() : facet_key<Tr>(current_cell_, current_index_); }
 
   /// A facet that a flip destroyed: out of the queue (or, in a cycle, known dead).
   void forget_facet(const Key& key)
@@ -210,7 +225,7 @@ private:
     }
     if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) return;
     const Key key = facet_key<Tr>(c, i);
-    if(key == current_) return; // the visit under way has seen it
+    if(is_current(c, i)) return; // the visit under way has seen it
     const auto done = queued_.emplace(key, c);
     if(done.second)
       next_.push_back(key);
@@ -224,9 +239,7 @@ private:
   /// classified from, and the side must not depend on the flips' history.
   bool locate(const Key& key, Cell_handle hint, Cell_handle& c, int& i) const
   {
-    Key k = key;
-    k.hint = hint;
-    const bool found = find_facet(tr_, k, c, i);
+    const bool found = find_facet(tr_, key, hint, c, i);
     CGAL_assertion(found);
     if(found && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) && !holds_facet(tr_, c, i))
     {
@@ -239,7 +252,7 @@ private:
 
   void register_facet(Vertex_handle a, Vertex_handle b, Cell_handle c, int i)
   {
-    registered_[edge_key<Tr>(a, b)].push_back(facet_key<Tr>(c, i));
+    registered_[edge_key<Tr>(a, b)].push_back({facet_key<Tr>(c, i), c});
   }
 
   /// Queues the facets registered on edge `(a, b)`, whose cells changed.
@@ -247,10 +260,11 @@ private:
   {
     if(registered_.empty()) return;
     const Edge edge = edge_key<Tr>(a, b);
-    const std::vector<Key>* facets = registered_.find(edge);
+    const std::vector<Listed>* facets = registered_.find(edge);
     if(facets == nullptr) return;
-    for(const Key& key : *facets)
-      if(!(key == current_) && queued_.emplace(key, key.hint).second) next_.push_back(key);
+    const Key current = current_key();
+    for(const Listed& f : *facets)
+      if(!(f.key == current) && queued_.emplace(f.key, f.hint).second) next_.push_back(f.key);
     registered_.erase(edge);
   }
 
@@ -276,7 +290,7 @@ private:
     queueing_ = false;
     Swap_report report;
     report.ending = CYCLE_LIMIT_REACHED;
-    std::vector<Key> facets;
+    std::vector<Listed> facets;
     for(std::size_t round = 1; round <= settings_.max_rounds; ++round)
     {
       record_ = Cycle_record();
@@ -285,19 +299,19 @@ private:
       facets.reserve(2 * tr_.number_of_cells());
       for(Cell_handle c : tr_.finite_cell_handles())
         for(int i = 0; i < 4; ++i)
-          if(holds_facet(tr_, c, i)) facets.push_back(facet_key<Tr>(c, i));
+          if(holds_facet(tr_, c, i)) facets.push_back({facet_key<Tr>(c, i), c});
       if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(facets, rng_);
       moved_.clear();
-      for(const Key& key : facets)
+      for(const Listed& f : facets)
       {
-        Cell_handle hint = key.hint;
+        Cell_handle hint = f.hint;
         if(!moved_.empty())
         {
-          if(const Cell_handle* moved = moved_.find(key)) hint = *moved;
+          if(const Cell_handle* moved = moved_.find(f.key)) hint = *moved;
         }
         Cell_handle c;
         int i;
-        if(hint == Cell_handle() || !locate(key, hint, c, i)) continue; // a flip destroyed it
+        if(hint == Cell_handle() || !locate(f.key, hint, c, i)) continue; // a flip destroyed it
         if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
         visit_facet(visit, c, i);
       }
@@ -325,19 +339,35 @@ private:
       first_round_ = true;
       record_ = Cycle_record();
       record_.cycle = 1;
-      std::vector<Cell_handle> cells;
-      cells.reserve(tr_.number_of_finite_cells());
-      for(Cell_handle c : tr_.finite_cell_handles()) cells.push_back(c);
-      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(cells, rng_);
-      for(Cell_handle c : cells)
+      auto visit_cell = [&](Cell_handle c) {
+        if(tr_.is_infinite(c) || (!touched_.empty() && touched_.contains(c))) return;
         for(int i = 0; i < 4; ++i)
         {
-          if(!touched_.empty() && touched_.contains(c)) break;
           if(!holds_facet(tr_, c, i)) continue;
-          current_ = facet_key<Tr>(c, i);
+          const std::size_t flips = record_.total_swaps();
+          current_cell_ = c;
+          current_index_ = i;
           visit_facet(visit, c, i);
+          if(record_.total_swaps() != flips) break; // c is gone; its facets are queued
         }
-      current_ = Key();
+      };
+      if(settings_.face_order == RANDOM_ORDER)
+      {
+        std::vector<Cell_handle> cells;
+        cells.reserve(tr_.number_of_finite_cells());
+        for(Cell_handle c : tr_.finite_cell_handles()) cells.push_back(c);
+        shuffle_uniformly(cells, rng_);
+        for(Cell_handle c : cells) visit_cell(c);
+      }
+      else
+      {
+        // The container itself, without a list: a flip may free or reuse cells
+        // ahead of the iterator (touched: skipped) but never frees the cell
+        // under it, which each flip made here reuses as its first new cell.
+        auto& cells = tr_.tds().cells();
+        for(auto it = cells.begin(); it != cells.end(); ++it) visit_cell(it);
+      }
+      current_cell_ = Cell_handle();
       first_round_ = false;
       touched_.clear();
       end_round(report);
@@ -367,10 +397,11 @@ private:
         int i;
         if(!locate(key, hint, c, i)) continue;
         if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
-        current_ = key;
+        current_cell_ = c;
+        current_index_ = i;
         visit_facet(visit, c, i);
       }
-      current_ = Key();
+      current_cell_ = Cell_handle();
       end_round(report);
     }
     return report;
@@ -391,8 +422,9 @@ private:
   Flat_hash_map<Key, Cell_handle, Facet_key_hash> queued_;     // queued, not yet visited: a cell that holds it
   Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_;      // a cycle: facets flips changed (null: destroyed)
   Flat_hash_set<Key, Facet_key_hash> kept_;                    // not Delaunay at their last visit
-  Flat_hash_map<Edge, std::vector<Key>, Edge_key_hash> registered_; // visit again when the edge's cells change
-  Key current_;
+  Flat_hash_map<Edge, std::vector<Listed>, Edge_key_hash> registered_; // visit again when the edge's cells change
+  Cell_handle current_cell_; // the facet under visit
+  int current_index_ = 0;
 };
 
 } // namespace internal
