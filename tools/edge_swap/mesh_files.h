@@ -158,25 +158,18 @@ inline void require_valid_point_set(const Input& in, const std::string& path)
 inline std::string build_mesh(Triangulation& tr, const Input& in)
 {
   std::vector<Triangulation::Vertex_handle> vertices;
-  const std::string problem = ES::build_triangulation_from_cells(tr, in.points, in.cells, vertices);
+  std::vector<Triangulation::Cell_handle> cells;
+  const std::string problem = ES::build_triangulation_from_cells(tr, in.points, in.cells, vertices, cells);
   if(!problem.empty()) return problem;
   for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
-
-  std::map<std::array<std::size_t, 4>, int> reference;
-  for(std::size_t k = 0; k < in.cells.size(); ++k)
-  {
-    auto key = in.cells[k];
-    std::sort(key.begin(), key.end());
-    reference[key] = in.cell_references.empty() ? 1 : in.cell_references[k];
-  }
   for(auto c : tr.all_cell_handles())
   {
     c->info() = ES::Domain_cell_info();
-    if(tr.is_infinite(c)) continue;
-    std::array<std::size_t, 4> key = {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
-    std::sort(key.begin(), key.end());
-    c->info().subdomain = reference.at(key);
+    if(tr.is_infinite(c)) c->info().subdomain = 0;
   }
+  // The cells come in the order of the tetrahedra read.
+  for(std::size_t k = 0; k < cells.size(); ++k)
+    cells[k]->info().subdomain = in.cell_references.empty() ? 1 : in.cell_references[k];
   for(std::size_t k = 0; k < in.triangles.size(); ++k)
   {
     const auto& t = in.triangles[k];

@@ -6,14 +6,32 @@
 #define CGAL_EDGE_SWAPPING_3_TRIANGULATION_FROM_CELLS_H
 
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
+#include <CGAL/Edge_swapping_3/internal/facet_key.h>
+#include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <algorithm>
 #include <array>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
+namespace internal {
+
+struct Index_triple_hash
+{
+  std::size_t operator()(const std::array<std::size_t, 3>& t) const
+  {
+    return std::size_t(std::uint64_t(t[0]) ^ rotate_left(std::uint64_t(t[1]), 21) ^ rotate_left(std::uint64_t(t[2]), 42));
+  }
+};
+
+struct Vertex_pair_hash
+{
+  template <class Pair>
+  std::size_t operator()(const Pair& p) const { return std::size_t(address_of(p.first) ^ rotate_left(address_of(p.second), 32)); }
+};
+
+} // namespace internal
 
 /// Makes the empty `tr` the triangulation with the given points and
 /// tetrahedra (0-based indices). Accepts every tetrahedron positively
@@ -22,11 +40,15 @@ namespace Edge_swapping_3 {
 /// out of range or repeated in a tetrahedron, flat or
 /// inverted tetrahedron, a facet shared by three tetrahedra, overlapping
 /// neighbours, unused point, boundary not a closed convex surface), and
-/// `tr` is left empty. `vertices` receives the vertex of each point.
+/// `tr` is left empty. `vertices` receives the vertex of each point, and
+/// `cell_handles` the cell of each tetrahedron.
+/// Facets are glued through a hash of their sorted point indices (a facet
+/// leaves the table when its second tetrahedron comes), so the time is linear.
 template <class Tr>
 std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
                                            std::vector<std::array<std::size_t, 4>> cells,
-                                           std::vector<typename Tr::Vertex_handle>& vertices)
+                                           std::vector<typename Tr::Vertex_handle>& vertices,
+                                           std::vector<typename Tr::Cell_handle>& cell_handles)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -89,9 +111,11 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   };
 
   // Glue the finite cells through their facets.
-  std::map<Key, std::pair<Cell_handle, int>> open; // facets seen once
-  std::vector<Cell_handle> handles;
+  internal::Flat_hash_map<Key, std::pair<Cell_handle, int>, internal::Index_triple_hash> open; // seen once
+  std::vector<Cell_handle>& handles = cell_handles;
+  handles.clear();
   handles.reserve(cells.size());
+  tds.cells().reserve(cells.size() + cells.size() / 4);
   for(std::size_t k = 0; k < cells.size(); ++k)
   {
     const auto& t = cells[k];
@@ -102,13 +126,13 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       c->vertex(i)->set_cell(c);
       Key key = {t[(i + 1) & 3], t[(i + 2) & 3], t[(i + 3) & 3]};
       std::sort(key.begin(), key.end());
-      auto it = open.find(key);
-      if(it == open.end()) { open.emplace(key, std::make_pair(c, i)); continue; }
-      Cell_handle d = it->second.first;
-      const int j = it->second.second;
-      if(d->neighbor(j) != Cell_handle())
-        return fail("facet " + std::to_string(key[0]) + " " + std::to_string(key[1]) + " " +
-                    std::to_string(key[2]) + " is shared by more than two tetrahedra (non-conforming)");
+      const auto slot = open.emplace(key, std::make_pair(c, i));
+      if(slot.second) continue;
+      Cell_handle d = slot.first->first;
+      const int j = slot.first->second;
+      // Glued facets leave the table; a facet of three or more tetrahedra is
+      // found below, where a vertex's star misses some of its tetrahedra.
+      open.erase(key);
       if(c->vertex(i) == d->vertex(j))
         return fail(cell_name(k) + " is a repeated tetrahedron");
       // Positive neighbours lie on opposite sides of their common facet.
@@ -124,7 +148,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
 
   // One infinite cell outside each boundary facet, then glue those together.
   const Vertex_handle inf = tr.infinite_vertex();
-  std::map<std::pair<Vertex_handle, Vertex_handle>, std::pair<Cell_handle, int>> ridges;
+  internal::Flat_hash_map<std::pair<Vertex_handle, Vertex_handle>, std::pair<Cell_handle, int>, internal::Vertex_pair_hash> ridges;
   for(Cell_handle c : handles)
     for(int i = 0; i < 4; ++i)
     {
@@ -143,19 +167,19 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
         Vertex_handle p, q;
         for(int r = 0; r < 4; ++r)
           if(r != m && r != i) (p == Vertex_handle() ? p : q) = o->vertex(r);
-        auto key = std::minmax(p, q);
-        auto it = ridges.find(key);
-        if(it == ridges.end()) { ridges.emplace(key, std::make_pair(o, m)); continue; }
-        if(it->second.first == Cell_handle())
+        if(internal::address_of(q) < internal::address_of(p)) std::swap(p, q);
+        const auto slot = ridges.emplace(std::make_pair(p, q), std::make_pair(o, m));
+        if(slot.second) continue;
+        if(slot.first->first == Cell_handle())
           return fail("the boundary is not a closed surface: an edge lies on more than two boundary facets");
-        o->set_neighbor(m, it->second.first);
-        it->second.first->set_neighbor(it->second.second, o);
-        it->second.first = Cell_handle();
+        o->set_neighbor(m, slot.first->first);
+        slot.first->first->set_neighbor(slot.first->second, o);
+        slot.first->first = Cell_handle();
       }
     }
-  for(const auto& r : ridges)
-    if(r.second.first != Cell_handle())
-      return fail("the boundary is not a closed surface: an edge lies on a single boundary facet");
+  bool open_ridge = false;
+  ridges.for_each([&](const auto&, const std::pair<Cell_handle, int>& r) { open_ridge = open_ridge || r.first != Cell_handle(); });
+  if(open_ridge) return fail("the boundary is not a closed surface: an edge lies on a single boundary facet");
 
   // Convex boundary: no vertex beyond the hull facet next to it.
   for(auto c : tr.all_cell_handles())
@@ -172,9 +196,54 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
         return fail("the mesh does not cover the convex hull of its points: its boundary is not convex");
     }
   }
-  if(!tr.is_valid(false))
-    return fail("the tetrahedra do not form a valid triangulation");
+  // Every vertex's star, walked through neighbours, holds all its tetrahedra:
+  // else the mesh is not a manifold there (a facet of three tetrahedra, or
+  // two sheets of tetrahedra over the same place). The stars also give the
+  // edges for Euler's relation, which CGAL's is_valid checks at a greater cost.
+  std::vector<std::size_t> incident(points.size(), 0);
+  for(const auto& t : cells)
+    for(auto v : t) ++incident[v];
+  std::vector<Cell_handle> star;
+  std::vector<Vertex_handle> adjacent;
+  std::size_t edge_ends = 0;
+  auto count_edges_at = [&](Vertex_handle v) {
+    adjacent.clear();
+    for(Cell_handle c : star)
+      for(int k = 0; k < 4; ++k)
+        if(c->vertex(k) != v) adjacent.push_back(c->vertex(k));
+    std::sort(adjacent.begin(), adjacent.end());
+    edge_ends += std::size_t(std::unique(adjacent.begin(), adjacent.end()) - adjacent.begin());
+  };
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    star.clear();
+    tds.incident_cells(vertices[v], std::back_inserter(star));
+    std::size_t finite = 0;
+    for(Cell_handle c : star) finite += tr.is_infinite(c) ? 0 : 1;
+    if(finite != incident[v])
+      return fail("the tetrahedra around point " + std::to_string(v) +
+                  " do not form one star: a facet is shared by more than two tetrahedra, or tetrahedra overlap");
+    count_edges_at(vertices[v]);
+  }
+  star.clear();
+  tds.incident_cells(inf, std::back_inserter(star));
+  count_edges_at(inf);
+  // Euler's relation of a triangulated 3-sphere (the infinite vertex closes it):
+  // V - E + F - C = 0, with F = 2C: V + C = E.
+  const std::size_t V = points.size() + 1, E = edge_ends / 2, C = tds.number_of_cells();
+  if(edge_ends % 2 != 0 || V + C != E)
+    return fail("the tetrahedra do not form a valid triangulation (Euler's relation fails)");
   return std::string();
+}
+
+/// As above, without the cells of the tetrahedra.
+template <class Tr>
+std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
+                                           std::vector<std::array<std::size_t, 4>> cells,
+                                           std::vector<typename Tr::Vertex_handle>& vertices)
+{
+  std::vector<typename Tr::Cell_handle> cell_handles;
+  return build_triangulation_from_cells(tr, points, std::move(cells), vertices, cell_handles);
 }
 
 } // namespace Edge_swapping_3

@@ -137,10 +137,10 @@ inline Medit_mesh read_medit_text(const std::string& name, std::string_view text
 
 inline Medit_mesh read_medit_file(const std::string& path) { return read_medit_text(path, read_text_file(path)); }
 
-/// Writes a Medit file (17 significant digits: coordinates read back exactly).
-inline void write_medit_file(std::ostream& out, const Medit_mesh& m)
+/// Writes a Medit file (each coordinate in the shortest text that reads back exactly).
+inline void write_medit_file(std::ostream& stream, const Medit_mesh& m)
 {
-  out.precision(17);
+  Text_sink out(stream); // to_chars: shortest text that reads back the same double
   out << "MeshVersionFormatted 1\nDimension 3\nVertices\n" << m.points.size() << '\n';
   for(std::size_t k = 0; k < m.points.size(); ++k)
     out << finite_value(m.points[k][0], "a coordinate") << ' ' << finite_value(m.points[k][1], "a coordinate") << ' '

@@ -172,12 +172,12 @@ read_ele_file(const std::string& path, std::size_t number_of_points, int first_i
   return read_ele_text(path, read_text_file(path), number_of_points, first_index);
 }
 
-/// Writes a .node file (17 significant digits: coordinates read back exactly).
-inline void write_node_file(std::ostream& out, const std::vector<std::array<double, 3>>& points,
+/// Writes a .node file (each coordinate in the shortest text that reads back exactly).
+inline void write_node_file(std::ostream& stream, const std::vector<std::array<double, 3>>& points,
                             const std::vector<std::vector<double>>& attributes, int first_index)
 {
   const std::size_t n_attr = attributes.empty() ? 0 : attributes.front().size();
-  out.precision(17);
+  Text_sink out(stream); // to_chars: shortest text that reads back the same double
   out << points.size() << " 3 " << n_attr << " 0\n";
   for(std::size_t k = 0; k < points.size(); ++k)
   {
@@ -189,9 +189,10 @@ inline void write_node_file(std::ostream& out, const std::vector<std::array<doub
 }
 
 /// Writes an .ele file; each tetrahedron positively oriented (TetGen's convention too).
-inline void write_ele_file(std::ostream& out, const std::vector<std::array<std::size_t, 4>>& cells,
+inline void write_ele_file(std::ostream& stream, const std::vector<std::array<std::size_t, 4>>& cells,
                            int first_index)
 {
+  Text_sink out(stream);
   out << cells.size() << " 4 0\n";
   for(std::size_t k = 0; k < cells.size(); ++k)
     out << k + first_index << ' ' << cells[k][0] + first_index << ' ' << cells[k][1] + first_index << ' '

@@ -5,9 +5,13 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IO_TEXT_OUTPUT_H
 #define CGAL_EDGE_SWAPPING_3_IO_TEXT_OUTPUT_H
 
+#include <charconv>
 #include <cmath>
+#include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <type_traits>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -23,6 +27,60 @@ inline double finite_value(double v, const char* what, const std::string* field 
                             " is not a finite number");
   return v;
 }
+
+/// Formats text into a buffer with `std::to_chars` (no stream per number) and
+/// hands it to the stream in large blocks. A double is written in its
+/// shortest form that reads back to the same double.
+class Text_sink
+{
+public:
+  explicit Text_sink(std::ostream& out) : out_(out) { buffer_.reserve(block + 64); }
+  ~Text_sink() { flush(); }
+  Text_sink(const Text_sink&) = delete;
+  Text_sink& operator=(const Text_sink&) = delete;
+
+  Text_sink& operator<<(double v) { return number(v); }
+  Text_sink& operator<<(char c)
+  {
+    buffer_.push_back(c);
+    return spill();
+  }
+  Text_sink& operator<<(std::string_view text)
+  {
+    buffer_.append(text);
+    return spill();
+  }
+  Text_sink& operator<<(const char* text) { return *this << std::string_view(text); }
+  Text_sink& operator<<(const std::string& text) { return *this << std::string_view(text); }
+  template <class Integer, class = std::enable_if_t<std::is_integral<Integer>::value>>
+  Text_sink& operator<<(Integer v) { return number(v); }
+
+  void flush()
+  {
+    out_.write(buffer_.data(), std::streamsize(buffer_.size()));
+    buffer_.clear();
+  }
+
+private:
+  static constexpr std::size_t block = 1 << 20;
+
+  template <class T>
+  Text_sink& number(T v)
+  {
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+    buffer_.append(text, end);
+    return spill();
+  }
+  Text_sink& spill()
+  {
+    if(buffer_.size() >= block) flush();
+    return *this;
+  }
+
+  std::ostream& out_;
+  std::string buffer_;
+};
 
 } // namespace IO
 } // namespace Edge_swapping_3

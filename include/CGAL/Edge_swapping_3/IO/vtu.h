@@ -22,11 +22,11 @@ namespace IO {
 
 typedef std::vector<std::pair<std::string, std::vector<double>>> Named_fields;
 
-inline void write_vtu_file(std::ostream& out, const std::vector<std::array<double, 3>>& points,
+inline void write_vtu_file(std::ostream& stream, const std::vector<std::array<double, 3>>& points,
                            const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                            const Named_fields& point_fields, const Named_fields& cell_fields)
 {
-  out.precision(17);
+  Text_sink out(stream); // to_chars: shortest text that reads back the same double
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n"
