@@ -17,11 +17,18 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
 
+/// A facet as its sorted point indices.
+struct Index_triple
+{
+  std::size_t a = 0, b = 0, c = 0;
+  friend bool operator==(const Index_triple& x, const Index_triple& y) { return x.a == y.a && x.b == y.b && x.c == y.c; }
+};
+
 struct Index_triple_hash
 {
-  std::size_t operator()(const std::array<std::size_t, 3>& t) const
+  std::size_t operator()(const Index_triple& t) const
   {
-    return std::size_t(std::uint64_t(t[0]) ^ rotate_left(std::uint64_t(t[1]), 21) ^ rotate_left(std::uint64_t(t[2]), 42));
+    return std::size_t(std::uint64_t(t.a) ^ rotate_left(std::uint64_t(t.b), 21) ^ rotate_left(std::uint64_t(t.c), 42));
   }
 };
 
@@ -52,7 +59,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef std::array<std::size_t, 3> Key;
+  typedef internal::Index_triple Key;
   CGAL_precondition(tr.number_of_vertices() == 0);
   auto orientation = tr.geom_traits().orientation_3_object();
   auto cell_name = [](std::size_t k) { return "tetrahedron " + std::to_string(k); };
@@ -124,8 +131,9 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     for(int i = 0; i < 4; ++i)
     {
       c->vertex(i)->set_cell(c);
-      Key key = {t[(i + 1) & 3], t[(i + 2) & 3], t[(i + 3) & 3]};
-      std::sort(key.begin(), key.end());
+      std::array<std::size_t, 3> sorted = {t[(i + 1) & 3], t[(i + 2) & 3], t[(i + 3) & 3]};
+      std::sort(sorted.begin(), sorted.end());
+      const Key key{sorted[0], sorted[1], sorted[2]};
       const auto slot = open.emplace(key, std::make_pair(c, i));
       if(slot.second) continue;
       Cell_handle d = slot.first->first;
@@ -139,8 +147,8 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       std::array<Vertex_handle, 4> u = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
       u[i] = d->vertex(j);
       if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) != NEGATIVE)
-        return fail(cell_name(k) + " overlaps a neighbour across facet " + std::to_string(key[0]) + " " +
-                    std::to_string(key[1]) + " " + std::to_string(key[2]));
+        return fail(cell_name(k) + " overlaps a neighbour across facet " + std::to_string(key.a) + " " +
+                    std::to_string(key.b) + " " + std::to_string(key.c));
       c->set_neighbor(i, d);
       d->set_neighbor(j, c);
     }
