@@ -56,7 +56,7 @@ public:
   /// Inserts `(key, value)` if `key` is absent; returns the stored value and whether it was inserted.
   std::pair<Value*, bool> emplace(const Key& key, const Value& value)
   {
-    if(2 * (size_ + 1) > slots_.size()) grow();
+    if(4 * (size_ + 1) > 3 * slots_.size()) grow(); // load at most 3/4
     std::size_t s = slot_of(key);
     for(; used_[s]; s = (s + 1) & mask_)
       if(slots_[s].first == key) return {&slots_[s].second, false};

@@ -169,6 +169,9 @@ public:
   /// their last visit and still are (exact), plus the hull facets.
   std::size_t number_of_non_delaunay_facets_left() const
   {
+    // Each kept facet is found again through the cells around a vertex: past
+    // a sixteenth of the cells, one pass over every facet costs less.
+    if(16 * kept_.size() > tr_.number_of_cells()) return number_of_non_delaunay_facets(tr_, settings_.perturbation);
     std::size_t n = 0;
     kept_.for_each([&](const Key& key) {
       Cell_handle c;
