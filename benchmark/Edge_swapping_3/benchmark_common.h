@@ -14,6 +14,8 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <utility>
+#include <vector>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -51,6 +53,29 @@ inline Measure in_child(const std::function<void(double*)>& work)
   struct rusage usage;
   if(wait4(pid, &status, 0, &usage) == pid) m.peak_mib = double(usage.ru_maxrss) / 1024.0;
   return m;
+}
+
+// Runs a program (its standard output dropped) in a child process; its
+// seconds and peak MiB.
+inline std::pair<double, double> run_program(const std::vector<std::string>& args)
+{
+  CGAL::Real_timer t;
+  t.start();
+  std::fflush(stdout);
+  const pid_t pid = fork();
+  if(pid == 0)
+  {
+    if(!freopen("/dev/null", "w", stdout)) _exit(1);
+    std::vector<char*> argv;
+    for(const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  struct rusage usage;
+  wait4(pid, &status, 0, &usage);
+  return {t.time(), double(usage.ru_maxrss) / 1024.0};
 }
 
 inline std::vector<K::Point_3> random_points(std::size_t n)

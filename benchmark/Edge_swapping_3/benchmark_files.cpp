@@ -27,31 +27,6 @@ typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_wit
 typedef CGAL::Triangulation_3<K, Tds> Triangulation;
 typedef K::Point_3 Point;
 
-namespace {
-
-// Runs a program in a child process; its seconds and peak MiB.
-std::pair<double, double> run_program(const std::vector<std::string>& args)
-{
-  CGAL::Real_timer t;
-  t.start();
-  std::fflush(stdout);
-  const pid_t pid = fork();
-  if(pid == 0)
-  {
-    if(!freopen("/dev/null", "w", stdout)) _exit(1);
-    std::vector<char*> argv;
-    for(const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  struct rusage usage;
-  wait4(pid, &status, 0, &usage);
-  return {t.time(), double(usage.ru_maxrss) / 1024.0};
-}
-
-} // namespace
 
 int main(int argc, char** argv)
 {

@@ -9,7 +9,11 @@
 // Each result is compared with CGAL's, cell for cell. Memory: the bytes the
 // driver allocated beyond the triangulation at its peak (operator new counted).
 //
-//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,helper,cycles]
+// With --programs, also the whole programs: `edge_swap optimize` of the moved
+// mesh (.node/.ele) against `cgal_delaunay_of_node`, which reads the same
+// points and writes CGAL's Delaunay mesh; each reads, computes and writes.
+//
+//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,helper,cycles] [--programs]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -92,9 +96,12 @@ int main(int argc, char** argv)
 {
   std::vector<double> sizes = {100000}, moves = {0.001, 0.01, 0.1};
   std::string contenders = "repair,helper,cycles";
-  for(int a = 1; a + 1 < argc; a += 2)
+  bool programs = false;
+  for(int a = 1; a < argc; a += 2)
   {
     const std::string o = argv[a];
+    if(o == "--programs") { programs = true; --a; continue; }
+    if(a + 1 >= argc) { std::cerr << "option " << o << " needs a value\n"; return 2; }
     if(o == "--sizes") sizes = list_of(argv[a + 1]);
     else if(o == "--moves") moves = list_of(argv[a + 1]);
     else if(o == "--contenders") contenders = argv[a + 1];
@@ -148,6 +155,31 @@ int main(int argc, char** argv)
         std::printf("%8zu %5.1f%% %8.0f | %7.3f | %-7s %8.3f %6.2f %8.0f %6.0f %9.0f %-12s %5s | %8.1f %8.1f %6.2f\n", n,
                     100 * f, cgal.values[1], cgal.values[0], name.c_str(), v[0], v[0] / cgal.values[0], v[1], v[2],
                     v[3], path, v[5] > 0 ? "yes" : "NO", v[7] / 1048576.0, v[6] / 1048576.0, (v[7] + v[6]) / v[7]);
+        std::fflush(stdout);
+      }
+      if(programs)
+      {
+        const std::string stem =
+          (std::filesystem::temp_directory_path() / ("edge_swapping_3_moving_" + std::to_string(getpid()))).string();
+        in_child([&](double*) {
+          Triangulation tr;
+          build_moved(tr, random_points(n), f);
+          std::vector<std::array<double, 3>> points(tr.number_of_vertices());
+          for(auto v : tr.finite_vertex_handles()) points[v->info()] = {v->point().x(), v->point().y(), v->point().z()};
+          std::vector<std::array<std::size_t, 4>> cells;
+          for(auto c : tr.finite_cell_handles())
+            cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+          std::ofstream node(stem + ".node"), ele(stem + ".ele");
+          ES::IO::write_node_file(node, points, {}, 0);
+          ES::IO::write_ele_file(ele, cells, 0);
+        });
+        const auto ours = run_program({EDGE_SWAP_BINARY, "optimize", stem + ".ele", "-o", stem + "_ours.ele"});
+        const auto cgal_program = run_program({CGAL_PROGRAM_BINARY, stem + ".node", stem + "_cgal.ele"});
+        std::printf("%8zu %5.1f%% whole programs: edge_swap optimize %.2f s (%.0f MiB), CGAL reading and building %.2f s "
+                    "(%.0f MiB): ratio %.2f\n", n, 100 * f, ours.first, ours.second, cgal_program.first,
+                    cgal_program.second, ours.first / cgal_program.first);
+        for(const char* suffix : {".node", ".ele", "_ours.node", "_ours.ele", "_cgal.node", "_cgal.ele"})
+          std::remove((stem + suffix).c_str());
         std::fflush(stdout);
       }
     }
