@@ -122,6 +122,16 @@ TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are
     REQUIRE((why.find("more than two") != std::string::npos || why.find("repeated") != std::string::npos));
   }
   {
+    // Two whole copies: every facet pairs up within its copy, so only the
+    // second boundary surface gives them away.
+    auto twice = cells;
+    twice.insert(twice.end(), cells.begin(), cells.end());
+    Tr tr;
+    const std::string why = ES::build_triangulation_from_cells(tr, corners, twice, vertices);
+    INFO(why);
+    REQUIRE((why.find("more than two") != std::string::npos || why.find("repeated") != std::string::npos));
+  }
+  {
     // Remove a corner tetrahedron touching the hull: the boundary is no longer convex
     // (or a point is left out).
     for(std::size_t k = 0; k < cells.size(); ++k)

@@ -27,6 +27,8 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <memory>
+#include <new>
 #include <thread>
 
 namespace edge_swap {
@@ -246,7 +248,7 @@ inline int run_experiment(const Experiment_options& opt)
   double next_report = 2;
   std::string error;
 
-  auto work = [&]() {
+  auto work_on_instances = [&]() {
     for(std::size_t k; (k = next++) < todo.size();)
     {
       const Experiment_instance& in = *todo[k];
@@ -314,10 +316,27 @@ inline int run_experiment(const Experiment_options& opt)
       }
     }
   };
+  // A thread never lets an exception out (that would abort the program): one
+  // thrown while an error is being recorded (memory exhausted) stops the run.
+  auto work = [&]() noexcept {
+    try
+    {
+      work_on_instances();
+    }
+    catch(...)
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if(error.empty()) error = "out of memory"; // short: no allocation
+      next = todo.size();
+    }
+  };
   // As many threads as can start (at least this one): a thread that cannot
-  // start is reported, not fatal.
+  // start is reported, not fatal. Thread stacks take address space until none
+  // is left, so 32 MB of it is held back while they start, for the work.
   const unsigned wanted = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::unique_ptr<char[]> held_back(new(std::nothrow) char[std::size_t(32) << 20]);
   std::vector<std::thread> pool;
+  pool.reserve(wanted);
   for(unsigned t = 1; t < wanted; ++t)
   {
     try
@@ -330,6 +349,7 @@ inline int run_experiment(const Experiment_options& opt)
       break;
     }
   }
+  held_back.reset();
   const unsigned threads = unsigned(pool.size()) + 1;
   work();
   for(auto& t : pool) t.join();

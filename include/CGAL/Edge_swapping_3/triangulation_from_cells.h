@@ -46,7 +46,7 @@ struct Vertex_pair_hash
 /// Returns an empty string on success; otherwise the problem (a point index
 /// out of range or repeated in a tetrahedron, flat or
 /// inverted tetrahedron, a facet shared by three tetrahedra, overlapping
-/// neighbours, unused point, boundary not a closed convex surface), and
+/// neighbours, unused point, boundary not one closed convex surface), and
 /// `tr` is left empty. `vertices` receives the vertex of each point, and
 /// `cell_handles` the cell of each tetrahedron.
 /// Facets are glued through a hash of their sorted point indices (a facet
@@ -139,7 +139,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       Cell_handle d = slot.first->first;
       const int j = slot.first->second;
       // Glued facets leave the table; a facet of three or more tetrahedra is
-      // found below, where a vertex's star misses some of its tetrahedra.
+      // found below, by the open facets it leaves inside.
       open.erase(key);
       if(c->vertex(i) == d->vertex(j))
         return fail(cell_name(k) + " is a repeated tetrahedron");
@@ -189,6 +189,34 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   ridges.for_each([&](const auto&, const std::pair<Cell_handle, int>& r) { open_ridge = open_ridge || r.first != Cell_handle(); });
   if(open_ridge) return fail("the boundary is not a closed surface: an edge lies on a single boundary facet");
 
+  // One boundary surface. With every tetrahedron positive and every shared
+  // facet between tetrahedra on its two sides, the tetrahedra cover each
+  // point a constant number of times; a closed, connected, locally convex
+  // boundary is the hull once, so that number is one and nothing overlaps.
+  // A facet of three or more tetrahedra, or a second sheet, leaves facets
+  // open inside: they close up into a second surface (or fail the ridges).
+  {
+    std::size_t outside = 0;
+    for(auto c : tds.cells())
+      if(c.has_vertex(inf)) ++outside;
+    std::vector<Cell_handle> stack = {inf->cell()};
+    internal::Flat_hash_set<Cell_handle, internal::Handle_hash> seen;
+    seen.insert(inf->cell());
+    while(!stack.empty())
+    {
+      const Cell_handle c = stack.back();
+      stack.pop_back();
+      for(int m = 0; m < 4; ++m)
+      {
+        const Cell_handle d = c->neighbor(m);
+        if(d->has_vertex(inf) && seen.insert(d)) stack.push_back(d);
+      }
+    }
+    if(seen.size() != outside)
+      return fail("the boundary is more than one surface: a facet is shared by more than two tetrahedra, or "
+                  "tetrahedra overlap");
+  }
+
   // Convex boundary: no vertex beyond the hull facet next to it.
   for(auto c : tr.all_cell_handles())
   {
@@ -204,43 +232,6 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
         return fail("the mesh does not cover the convex hull of its points: its boundary is not convex");
     }
   }
-  // Every vertex's star, walked through neighbours, holds all its tetrahedra:
-  // else the mesh is not a manifold there (a facet of three tetrahedra, or
-  // two sheets of tetrahedra over the same place). The stars also give the
-  // edges for Euler's relation, which CGAL's is_valid checks at a greater cost.
-  std::vector<std::size_t> incident(points.size(), 0);
-  for(const auto& t : cells)
-    for(auto v : t) ++incident[v];
-  std::vector<Cell_handle> star;
-  std::vector<Vertex_handle> adjacent;
-  std::size_t edge_ends = 0;
-  auto count_edges_at = [&](Vertex_handle v) {
-    adjacent.clear();
-    for(Cell_handle c : star)
-      for(int k = 0; k < 4; ++k)
-        if(c->vertex(k) != v) adjacent.push_back(c->vertex(k));
-    std::sort(adjacent.begin(), adjacent.end());
-    edge_ends += std::size_t(std::unique(adjacent.begin(), adjacent.end()) - adjacent.begin());
-  };
-  for(std::size_t v = 0; v < points.size(); ++v)
-  {
-    star.clear();
-    tds.incident_cells(vertices[v], std::back_inserter(star));
-    std::size_t finite = 0;
-    for(Cell_handle c : star) finite += tr.is_infinite(c) ? 0 : 1;
-    if(finite != incident[v])
-      return fail("the tetrahedra around point " + std::to_string(v) +
-                  " do not form one star: a facet is shared by more than two tetrahedra, or tetrahedra overlap");
-    count_edges_at(vertices[v]);
-  }
-  star.clear();
-  tds.incident_cells(inf, std::back_inserter(star));
-  count_edges_at(inf);
-  // Euler's relation of a triangulated 3-sphere (the infinite vertex closes it):
-  // V - E + F - C = 0, with F = 2C: V + C = E.
-  const std::size_t V = points.size() + 1, E = edge_ends / 2, C = tds.number_of_cells();
-  if(edge_ends % 2 != 0 || V + C != E)
-    return fail("the tetrahedra do not form a valid triangulation (Euler's relation fails)");
   return std::string();
 }
 
