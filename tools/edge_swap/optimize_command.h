@@ -89,7 +89,10 @@ inline int run_optimize(const Optimize_options& o)
     mark_point_set_domain(tr);
   }
 
-  const ES::Mesh_statistics before = ES::mesh_statistics(tr);
+  // The full statistics (every dihedral angle) only when --stats asks for them.
+  const bool with_statistics = !o.stats.empty();
+  const std::size_t cells_before = tr.number_of_finite_cells();
+  const ES::Mesh_statistics before = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
   namespace np = ES::parameters;
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
   const auto parameters = np::schedule(
@@ -110,7 +113,7 @@ inline int run_optimize(const Optimize_options& o)
       return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
     });
   });
-  const ES::Mesh_statistics after = ES::mesh_statistics(tr);
+  const ES::Mesh_statistics after = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
   const bool repairs = !o.helper && !o.paper && o.criterion == "delaunay";
 
   Output_files files;
@@ -147,7 +150,7 @@ inline int run_optimize(const Optimize_options& o)
   const auto t = report.total_swaps();
   std::cout << (o.helper ? "helper" : o.criterion) << ": " << ES::swap_ending_name(report.ending) << " after "
             << report.number_of_cycles() << " rounds; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
-            << t[2] << ", 4-4 " << t[3] << "; cells " << before.cells << " -> " << after.cells << "; "
+            << t[2] << ", 4-4 " << t[3] << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; "
             << report.seconds << " s\n";
   if(repairs && report.repair_path != ES::PLAIN_FLIPS)
     std::cout << "delaunay repair: plain flips left " << report.stuck_after_plain_flips

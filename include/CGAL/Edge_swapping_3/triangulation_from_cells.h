@@ -5,6 +5,8 @@
 #ifndef CGAL_EDGE_SWAPPING_3_TRIANGULATION_FROM_CELLS_H
 #define CGAL_EDGE_SWAPPING_3_TRIANGULATION_FROM_CELLS_H
 
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
@@ -38,6 +40,19 @@ struct Vertex_pair_hash
   std::size_t operator()(const Pair& p) const { return std::size_t(address_of(p.first) ^ rotate_left(address_of(p.second), 32)); }
 };
 
+/// Tetrahedron index to the point of its first vertex (for a Hilbert sort of the tetrahedra).
+template <class Point>
+struct First_vertex_point_map
+{
+  typedef std::size_t key_type;
+  typedef Point value_type;
+  typedef const Point& reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<Point>* points;
+  const std::vector<std::array<std::size_t, 4>>* cells;
+  friend reference get(const First_vertex_point_map& m, std::size_t k) { return (*m.points)[(*m.cells)[k][0]]; }
+};
+
 } // namespace internal
 
 /// Makes the empty `tr` the triangulation with the given points and
@@ -53,7 +68,7 @@ struct Vertex_pair_hash
 /// leaves the table when its second tetrahedron comes), so the time is linear.
 template <class Tr>
 std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
-                                           std::vector<std::array<std::size_t, 4>> cells,
+                                           const std::vector<std::array<std::size_t, 4>>& cells,
                                            std::vector<typename Tr::Vertex_handle>& vertices,
                                            std::vector<typename Tr::Cell_handle>& cell_handles)
 {
@@ -90,8 +105,9 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     else if(int(o) != sign)
       return cell_name(k) + " is inverted (its orientation differs from " + cell_name(0) + ")";
   }
-  if(sign < 0)
-    for(auto& t : cells) std::swap(t[0], t[1]);
+  // Negatively oriented input is read with its first two points exchanged
+  // (no copy of the cells: they can be most of the memory).
+  const bool reversed = sign < 0;
 
   std::vector<char> used(points.size(), 0);
   for(const auto& t : cells)
@@ -121,13 +137,26 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   internal::Flat_hash_map<Key, std::pair<Cell_handle, int>, internal::Index_triple_hash> open; // seen once
   std::vector<Cell_handle>& handles = cell_handles;
   handles.clear();
-  handles.reserve(cells.size());
   tds.cells().reserve(cells.size() + cells.size() / 4);
-  for(std::size_t k = 0; k < cells.size(); ++k)
+  // In Hilbert order of their first vertices, a facet's second tetrahedron
+  // comes soon after its first: the table of open facets stays small and in
+  // cache, whatever the order of the file (the cells are also stored in that
+  // order). Measured: it pays above a million tetrahedra (check of 6.7
+  // million: 21 s against 25 s) and costs below (optimize of 672,000: 2.1 s
+  // against 1.7 s), hence the threshold.
+  std::vector<std::size_t> order(cells.size());
+  for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  typedef internal::First_vertex_point_map<typename Tr::Point> Point_of_cell;
+  if(cells.size() > 1000000)
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits, Point_of_cell>(Point_of_cell{&points, &cells}));
+  handles.resize(cells.size());
+  for(std::size_t k : order)
   {
-    const auto& t = cells[k];
+    std::array<std::size_t, 4> t = cells[k];
+    if(reversed) std::swap(t[0], t[1]);
     Cell_handle c = tds.create_cell(vertices[t[0]], vertices[t[1]], vertices[t[2]], vertices[t[3]]);
-    handles.push_back(c);
+    handles[k] = c;
     for(int i = 0; i < 4; ++i)
     {
       c->vertex(i)->set_cell(c);
@@ -238,11 +267,11 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
 /// As above, without the cells of the tetrahedra.
 template <class Tr>
 std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
-                                           std::vector<std::array<std::size_t, 4>> cells,
+                                           const std::vector<std::array<std::size_t, 4>>& cells,
                                            std::vector<typename Tr::Vertex_handle>& vertices)
 {
   std::vector<typename Tr::Cell_handle> cell_handles;
-  return build_triangulation_from_cells(tr, points, std::move(cells), vertices, cell_handles);
+  return build_triangulation_from_cells(tr, points, cells, vertices, cell_handles);
 }
 
 } // namespace Edge_swapping_3
