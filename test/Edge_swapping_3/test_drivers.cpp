@@ -415,3 +415,20 @@ TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")
   REQUIRE(report.cycles.back().total_swaps() == 0);
   REQUIRE(report.cycles.back().new_tags == 0);
 }
+
+TEST_CASE("A visitor with state of its own is passed through std::ref", "[drivers]")
+{
+  struct Counter
+  {
+    std::size_t flips = 0;
+    void before_flip(const Tr&, const ES::Flip_plan<Tr>&) { ++flips; }
+    void after_flip(const Tr&, const ES::Flip_plan<Tr>&, const std::array<Cell_handle, 4>&, int) {}
+  };
+  Tr tr;
+  ES::insert_by_placing(tr, random_in_cube(300, 1));
+  Counter counter;
+  const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), CGAL::parameters::visitor(std::ref(counter)));
+  const auto t = r.total_swaps();
+  REQUIRE(t[0] + t[1] + t[2] + t[3] > 0);
+  REQUIRE(counter.flips == t[0] + t[1] + t[2] + t[3]);
+}
