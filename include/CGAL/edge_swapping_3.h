@@ -116,21 +116,28 @@ void decide_delaunay_ending(Swap_report& report, Driver& driver, const Driver_se
   if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
 }
 
-template <class Tr, class NamedParameters>
-Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np)
+/// Calls `f(driver)` with the driver of `np`. The constraints and the visitor
+/// are copies, as in CGAL: a visitor keeps its state behind a pointer or std::ref.
+template <class Tr, class NamedParameters, class F>
+auto with_driver(Tr& tr, const Driver_settings& s, const NamedParameters& np, F f)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  // Copies, as CGAL does: a visitor keeps its state behind a pointer or std::ref.
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor());
-  typedef std::remove_const_t<decltype(constraints)> Constraints;
-  typedef decltype(visitor) Visitor;
-  Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
-  Helper_rule rule;
-  Swap_report report = driver.run(rule);
-  decide_delaunay_ending(report, driver, s);
-  return report;
+  Swap_driver<Tr, std::remove_const_t<decltype(constraints)>, decltype(visitor)> driver(tr, s, constraints, visitor);
+  return f(driver);
+}
+
+template <class Tr, class NamedParameters>
+Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np)
+{
+  return with_driver(tr, s, np, [&](auto& driver) {
+    Helper_rule rule;
+    Swap_report report = driver.run(rule);
+    decide_delaunay_ending(report, driver, s);
+    return report;
+  });
 }
 
 } // namespace internal
@@ -174,18 +181,16 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 
   ES::internal::Driver_settings s = ES::internal::driver_settings(np, ES::STORAGE_ORDER);
   if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
-  // Copies, as CGAL does: a visitor keeps its state behind a pointer or std::ref.
-  const auto constraints = choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints), ES::No_constraints());
-  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), ES::Default_flip_visitor());
-  typedef std::remove_const_t<decltype(constraints)> Constraints;
-  typedef decltype(visitor) Visitor;
-
-  ES::internal::Swap_driver<Tr, Constraints, Visitor> driver(tr, s, constraints, visitor);
-  ES::internal::Criterion_rule<Criterion> rule{criterion};
-  ES::Swap_report report = driver.run(rule);
+  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints),
+                                                  ES::No_constraints()))> Constraints;
+  ES::Swap_report report = ES::internal::with_driver(tr, s, np, [&](auto& driver) {
+    ES::internal::Criterion_rule<Criterion> rule{criterion};
+    ES::Swap_report r = driver.run(rule);
+    if constexpr(delaunay) ES::internal::decide_delaunay_ending(r, driver, s);
+    return r;
+  });
   if constexpr(delaunay)
   {
-    ES::internal::decide_delaunay_ending(report, driver, s);
     if(report.ending == ES::CONVERGED || !choose_parameter(get_parameter(np, ES::internal_np::delaunay_repair), true))
       return report;
 

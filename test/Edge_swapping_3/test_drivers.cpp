@@ -4,6 +4,8 @@
 
 #include "test_common.h"
 #include "experiment_case.h"
+#include "program_runner.h"
+#include <sstream>
 #include <map>
 #include <set>
 
@@ -431,4 +433,36 @@ TEST_CASE("A visitor with state of its own is passed through std::ref", "[driver
   const auto t = r.total_swaps();
   REQUIRE(t[0] + t[1] + t[2] + t[3] > 0);
   REQUIRE(counter.flips == t[0] + t[1] + t[2] + t[3]);
+}
+
+TEST_CASE("edge_swap optimize: the Delaunay repair is reported, --paper turns it off, bad schedules are refused", "[drivers][program]")
+{
+  // Joe's 9 points: plain flips in the paper's cycles, random order, seed 6012, are stuck.
+  const auto c = xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
+  std::ostringstream node;
+  node.precision(17);
+  node << c.points.size() << " 3 0 0\n";
+  for(std::size_t k = 0; k < c.points.size(); ++k)
+    node << k << ' ' << c.points[k].x() << ' ' << c.points[k].y() << ' ' << c.points[k].z() << '\n';
+  Workdir w;
+  w.write("joe.node", node.str());
+  const std::string common = w.path("joe.node") + " --start placing:input --schedule cycles --order random --seed 6012 ";
+
+  const Run repaired = w.run("optimize " + common + "-o " + w.path("r.ele") + " --stats " + w.path("r.json"));
+  INFO(repaired.out << repaired.err);
+  REQUIRE(repaired.exit_code == 0);
+  REQUIRE(repaired.out.find("delaunay: converged") != std::string::npos);
+  REQUIRE(repaired.out.find("delaunay repair: plain flips left") != std::string::npos);
+  const auto stats = nlohmann::json::parse(Workdir::slurp(w.path("r.json")));
+  REQUIRE(stats["delaunay_repair"]["path"] == "helper flips");
+  REQUIRE(stats["non_delaunay_faces"] == 0);
+
+  const Run paper = w.run("optimize " + common + "--paper -o " + w.path("p.ele"));
+  REQUIRE(paper.exit_code == 0);
+  REQUIRE(paper.out.find("delaunay: stuck") != std::string::npos);
+
+  require_clean_rejection(w, "optimize " + w.path("joe.node") + " --schedule sometimes -o " + w.path("x.ele"),
+                          "--schedule is queue or cycles", {"joe.node", "r.ele", "r.node", "r.json", "p.ele", "p.node"});
+  require_clean_rejection(w, "optimize " + w.path("joe.node") + " --paper --criterion minmax-dihedral -o " + w.path("x.ele"),
+                          "--paper turns off the Delaunay repair", {"joe.node", "r.ele", "r.node", "r.json", "p.ele", "p.node"});
 }
