@@ -4,6 +4,7 @@
 // cells (then it stays). Contenders, each in a child process of its own:
 //   CGAL    Delaunay_triangulation_3 of the moved points, from scratch
 //   repair  swap_edges with the Delaunay criterion (work queue, Delaunay repair)
+//   random  the same in random face order (a uniform permutation per round)
 //   helper  swap_edges_with_helper (work queue)
 //   cycles  swap_edges, the paper's cycles, no repair (the drivers up to issue 9 swept like this)
 // Each result is compared with CGAL's, cell for cell. Memory: the bytes the
@@ -137,7 +138,7 @@ int main(int argc, char** argv)
           namespace np = ES::parameters;
           ES::Swap_report r;
           if(name == "repair") r = CGAL::swap_edges(tr, ES::Delaunay_criterion());
-          else if(name == "storage") r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(ES::STORAGE_ORDER));
+          else if(name == "random") r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(ES::RANDOM_ORDER));
           else if(name == "helper") r = CGAL::swap_edges_with_helper(tr);
           else r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, np::delaunay_repair(false)));
           out[0] = r.seconds;
@@ -147,11 +148,11 @@ int main(int argc, char** argv)
           out[1] = double(s[0] + s[1] + s[2] + s[3]);
           out[2] = double(r.number_of_cycles());
           out[3] = double(r.number_of_visits());
-          out[4] = (name == "repair" || name == "storage") ? double(r.repair_path) : (r.ending == ES::CONVERGED ? 0 : -1);
+          out[4] = (name == "repair" || name == "random") ? double(r.repair_path) : (r.ending == ES::CONVERGED ? 0 : -1);
           out[5] = ES::compare_with_delaunay(tr).identical ? 1 : 0;
         });
         const double* v = ours.values;
-        const char* path = v[4] < 0 ? "not ended" : (name == "repair" || name == "storage" ? ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(v[4]))) : "converged");
+        const char* path = v[4] < 0 ? "not ended" : (name == "repair" || name == "random" ? ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(v[4]))) : "converged");
         std::printf("%8zu %5.1f%% %8.0f | %7.3f | %-7s %8.3f %6.2f %8.0f %6.0f %9.0f %-12s %5s | %8.1f %8.1f %6.2f\n", n,
                     100 * f, cgal.values[1], cgal.values[0], name.c_str(), v[0], v[0] / cgal.values[0], v[1], v[2],
                     v[3], path, v[5] > 0 ? "yes" : "NO", v[7] / 1048576.0, v[6] / 1048576.0, (v[7] + v[6]) / v[7]);
