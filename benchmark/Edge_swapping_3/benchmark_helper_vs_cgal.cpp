@@ -3,7 +3,14 @@
 // Delaunay on the same points, in one run. Each contender runs in a child
 // process of its own, so that its peak memory is its own.
 //
-//   benchmark_helper_vs_cgal [--max-cycles C] [N ...]   (default: 1000 cycles; 100000 1000000)
+//   benchmark_helper_vs_cgal [--max-cycles C] [--stall-dir DIR] [N ...]
+//                            (default: 1000 cycles; 100000 1000000)
+//
+// When the helper has not converged, --stall-dir writes the stalled region:
+// DIR/stall_N.node/.ele, the cells around the facets that are still not
+// locally Delaunay (every cell with a vertex on one), and DIR/stall_N.txt,
+// each such facet with its five-point configuration and whether it is
+// swappable: what keeps the helper from ending there.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -13,16 +20,60 @@
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include "benchmark_common.h"
 #include <iostream>
+#include <map>
+#include <set>
 
 typedef CGAL::Triangulation_3<K> Triangulation;
+
+namespace {
+
+// The stalled region of `tr` (see above); returns the number of facets in it.
+std::size_t write_stalled_region(const Triangulation& tr, const std::string& stem)
+{
+  std::vector<Triangulation::Facet> stalled;
+  for(const auto& f : tr.finite_facets())
+    if(!ES::is_locally_delaunay(tr, f.first, f.second)) stalled.push_back(f);
+  std::map<Triangulation::Vertex_handle, std::size_t> index;
+  std::set<Triangulation::Cell_handle> region;
+  for(const auto& f : stalled)
+    for(int k = 1; k < 4; ++k)
+    {
+      std::vector<Triangulation::Cell_handle> star;
+      tr.finite_incident_cells(f.first->vertex((f.second + k) & 3), std::back_inserter(star));
+      region.insert(star.begin(), star.end());
+    }
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 4>> cells;
+  auto number = [&](Triangulation::Vertex_handle v) {
+    const auto it = index.emplace(v, points.size());
+    if(it.second) points.push_back({v->point().x(), v->point().y(), v->point().z()});
+    return it.first->second;
+  };
+  for(auto c : region) cells.push_back({number(c->vertex(0)), number(c->vertex(1)), number(c->vertex(2)), number(c->vertex(3))});
+  std::ofstream node(stem + ".node"), ele(stem + ".ele"), text(stem + ".txt");
+  ES::IO::write_node_file(node, points, {}, 0);
+  ES::IO::write_ele_file(ele, cells, 0);
+  text << "# facet (point indices in " << stem << ".node), configuration, swappable\n";
+  for(const auto& f : stalled)
+  {
+    const auto conf = ES::classify_facet(tr, f.first, f.second);
+    for(int k = 1; k < 4; ++k) text << number(f.first->vertex((f.second + k) & 3)) << ' ';
+    text << ES::configuration_kind_name(conf.kind()) << ' ' << (conf.is_swappable() ? "yes" : "no") << '\n';
+  }
+  return stalled.size();
+}
+
+} // namespace
 
 int main(int argc, char** argv)
 {
   std::vector<std::size_t> sizes;
   std::size_t max_cycles = 1000;
+  std::string stall_dir;
   for(int a = 1; a < argc; ++a)
   {
     if(std::string(argv[a]) == "--max-cycles" && a + 1 < argc) max_cycles = std::stoul(argv[++a]);
+    else if(std::string(argv[a]) == "--stall-dir" && a + 1 < argc) stall_dir = argv[++a];
     else sizes.push_back(std::stoul(argv[a]));
   }
   if(sizes.empty()) sizes = {100000, 1000000};
@@ -34,7 +85,7 @@ int main(int argc, char** argv)
   {
     const Measure cgal = in_child([n](double* out) { cgal_delaunay(n, out); });
     const Measure tet = in_child([n](double* out) { tetgen(n, out); });
-    const Measure ours = in_child([n, max_cycles](double* out) {
+    const Measure ours = in_child([n, max_cycles, &stall_dir](double* out) {
       const auto points = random_points(n);
       Triangulation tr;
       CGAL::Real_timer t;
@@ -60,6 +111,9 @@ int main(int argc, char** argv)
       getrusage(RUSAGE_SELF, &usage);
       out[5] = double(usage.ru_maxrss) / 1024.0; // peak before the comparison, which builds CGAL's too
       out[4] = ES::compare_with_delaunay(tr).identical ? 1 : 0; // not timed
+      if(out[4] == 0 && !stall_dir.empty())
+        std::cerr << "  stalled region: " << write_stalled_region(tr, stall_dir + "/stall_" + std::to_string(n))
+                  << " facets not locally Delaunay, written to " << stall_dir << "/stall_" << n << ".*\n";
     });
     const double ours_seconds = ours.values[0] + ours.values[1];
     const int ending = int(ours.values[6]);

@@ -58,6 +58,12 @@ struct Criterion_rule
 {
   const Criterion& criterion;
 
+  bool sees_facet_from_either_side() const
+  {
+    if constexpr(Is_delaunay_criterion<Criterion>::value) return criterion.perturbation == CGAL_PERTURBATION;
+    else return false;
+  }
+
   template <class Driver, class Cell_handle>
   void operator()(Driver& d, Cell_handle c, int i) const
   {
@@ -102,7 +108,7 @@ struct Helper_rule
           return;
         }
     }
-    // A non-Delaunay facet tags the cells around its edges: visit it again when they change.
+    // A non-Delaunay facet is visited again in the next round, as in a cycle.
     d.keep(conf, !delaunay, !delaunay);
   }
 };

@@ -10,6 +10,7 @@
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/open_facet_table.h>
 #include <algorithm>
 #include <array>
 #include <string>
@@ -18,21 +19,6 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
-
-/// A facet as its sorted point indices.
-struct Index_triple
-{
-  std::size_t a = 0, b = 0, c = 0;
-  friend bool operator==(const Index_triple& x, const Index_triple& y) { return x.a == y.a && x.b == y.b && x.c == y.c; }
-};
-
-struct Index_triple_hash
-{
-  std::size_t operator()(const Index_triple& t) const
-  {
-    return std::size_t(std::uint64_t(t.a) ^ rotate_left(std::uint64_t(t.b), 21) ^ rotate_left(std::uint64_t(t.c), 42));
-  }
-};
 
 struct Vertex_pair_hash
 {
@@ -64,8 +50,8 @@ struct First_vertex_point_map
 /// neighbours, unused point, boundary not one closed convex surface), and
 /// `tr` is left empty. `vertices` receives the vertex of each point, and
 /// `cell_handles` the cell of each tetrahedron.
-/// Facets are glued through a hash of their sorted point indices (a facet
-/// leaves the table when its second tetrahedron comes), so the time is linear.
+/// Facets are glued through a hash table of their sorted point indices (a
+/// facet leaves the table when its second tetrahedron comes), so the time is linear.
 template <class Tr>
 std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
                                            const std::vector<std::array<std::size_t, 4>>& cells,
@@ -74,7 +60,6 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef internal::Index_triple Key;
   CGAL_precondition(tr.number_of_vertices() == 0);
   auto orientation = tr.geom_traits().orientation_3_object();
   auto cell_name = [](std::size_t k) { return "tetrahedron " + std::to_string(k); };
@@ -82,6 +67,9 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   std::string problem = point_set_problem(points, tr.geom_traits());
   if(!problem.empty()) return problem;
   if(cells.empty()) return "no tetrahedra";
+  // The table of open facets packs indices and places in 32 bits.
+  if(points.size() >= internal::Open_facet_table::limit || cells.size() >= internal::Open_facet_table::limit / 4 - 1)
+    return "too many points or tetrahedra (the limit is 2^32 points and 2^30 tetrahedra)";
   // Every reader hands its cells over here: indices are checked once, first.
   for(std::size_t k = 0; k < cells.size(); ++k)
     for(int i = 0; i < 4; ++i)
@@ -134,7 +122,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   };
 
   // Glue the finite cells through their facets.
-  internal::Flat_hash_map<Key, std::pair<Cell_handle, int>, internal::Index_triple_hash> open; // seen once
+  internal::Open_facet_table open(cells.size() / 8);
   std::vector<Cell_handle>& handles = cell_handles;
   handles.clear();
   tds.cells().reserve(cells.size() + cells.size() / 4);
@@ -151,8 +139,21 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     CGAL::hilbert_sort(order.begin(), order.end(),
                        CGAL::Spatial_sort_traits_adapter_3<typename Tr::Geom_traits, Point_of_cell>(Point_of_cell{&points, &cells}));
   handles.resize(cells.size());
-  for(std::size_t k : order)
+  auto sorted_facet = [&](const std::array<std::size_t, 4>& t, int i) {
+    std::array<std::size_t, 3> key = {t[(i + 1) & 3], t[(i + 2) & 3], t[(i + 3) & 3]};
+    std::sort(key.begin(), key.end());
+    return key;
+  };
+  for(std::size_t position = 0; position < order.size(); ++position)
   {
+    // The table is larger than the cache: ask for the slots of a later cell.
+    if(position + 4 < order.size())
+      for(int i = 0; i < 4; ++i)
+      {
+        const auto ahead = sorted_facet(cells[order[position + 4]], i);
+        open.prefetch(std::uint32_t(ahead[0]), std::uint32_t(ahead[1]), std::uint32_t(ahead[2]));
+      }
+    const std::size_t k = order[position];
     std::array<std::size_t, 4> t = cells[k];
     if(reversed) std::swap(t[0], t[1]);
     Cell_handle c = tds.create_cell(vertices[t[0]], vertices[t[1]], vertices[t[2]], vertices[t[3]]);
@@ -160,24 +161,22 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     for(int i = 0; i < 4; ++i)
     {
       c->vertex(i)->set_cell(c);
-      std::array<std::size_t, 3> sorted = {t[(i + 1) & 3], t[(i + 2) & 3], t[(i + 3) & 3]};
-      std::sort(sorted.begin(), sorted.end());
-      const Key key{sorted[0], sorted[1], sorted[2]};
-      const auto slot = open.emplace(key, std::make_pair(c, i));
-      if(slot.second) continue;
-      Cell_handle d = slot.first->first;
-      const int j = slot.first->second;
+      const auto key = sorted_facet(t, i);
       // Glued facets leave the table; a facet of three or more tetrahedra is
       // found below, by the open facets it leaves inside.
-      open.erase(key);
+      const std::int64_t first = open.close_or_open(std::uint32_t(key[0]), std::uint32_t(key[1]),
+                                                    std::uint32_t(key[2]), std::uint32_t(4 * k + i));
+      if(first < 0) continue;
+      const Cell_handle d = handles[std::size_t(first) / 4];
+      const int j = int(first % 4);
       if(c->vertex(i) == d->vertex(j))
         return fail(cell_name(k) + " is a repeated tetrahedron");
       // Positive neighbours lie on opposite sides of their common facet.
       std::array<Vertex_handle, 4> u = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
       u[i] = d->vertex(j);
       if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) != NEGATIVE)
-        return fail(cell_name(k) + " overlaps a neighbour across facet " + std::to_string(key.a) + " " +
-                    std::to_string(key.b) + " " + std::to_string(key.c));
+        return fail(cell_name(k) + " overlaps a neighbour across facet " + std::to_string(key[0]) + " " +
+                    std::to_string(key[1]) + " " + std::to_string(key[2]));
       c->set_neighbor(i, d);
       d->set_neighbor(j, c);
     }
