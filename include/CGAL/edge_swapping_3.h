@@ -135,10 +135,13 @@ auto with_driver(Tr& tr, const Driver_settings& s, const NamedParameters& np, F 
   return f(driver);
 }
 
+/// The helper; its first round visits `seeds` only when there are any.
 template <class Tr, class NamedParameters>
-Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np)
+Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np,
+                       const std::vector<Facet_key<Tr>>& seeds = {})
 {
   return with_driver(tr, s, np, [&](auto& driver) {
+    if(s.schedule == WORK_QUEUE) driver.seed(seeds);
     Helper_rule rule;
     Swap_report report = driver.run(rule);
     decide_delaunay_ending(report, driver, s);
@@ -189,10 +192,16 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
   if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
   typedef std::decay_t<decltype(choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints),
                                                   ES::No_constraints()))> Constraints;
+  // Where plain flips are stuck: the facets left, for the helper's first round.
+  std::vector<ES::internal::Facet_key<Tr>> stuck;
   ES::Swap_report report = ES::internal::with_driver(tr, s, np, [&](auto& driver) {
     ES::internal::Criterion_rule<Criterion> rule{criterion};
     ES::Swap_report r = driver.run(rule);
-    if constexpr(delaunay) ES::internal::decide_delaunay_ending(r, driver, s);
+    if constexpr(delaunay)
+    {
+      ES::internal::decide_delaunay_ending(r, driver, s);
+      if(r.ending != ES::CONVERGED && s.schedule == ES::WORK_QUEUE) stuck = driver.non_delaunay_facets_kept();
+    }
     return r;
   });
   if constexpr(delaunay)
@@ -205,7 +214,9 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
     ES::internal::Driver_settings hs = ES::internal::driver_settings(np, ES::RANDOM_ORDER);
     hs.perturbation = criterion.perturbation;
     hs.max_rounds = choose_parameter(get_parameter(np, ES::internal_np::helper_rounds_before_rebuild), std::size_t(100));
-    ES::Swap_report helper = ES::internal::run_helper(tr, hs, np);
+    // Without tags the helper does nothing on a Delaunay facet: its first
+    // round needs only the facets plain flips left.
+    ES::Swap_report helper = ES::internal::run_helper(tr, hs, np, stuck);
     report.repair_path = ES::HELPER_FLIPS;
     report.helper_rounds = helper.number_of_cycles();
     for(ES::Cycle_record r : helper.cycles)

@@ -361,7 +361,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
 
 TEST_CASE("Delaunay repair: every family and start ends equal to CGAL, in both schedules", "[drivers][exactness]")
 {
-  std::size_t helped = 0;
+  std::size_t helped = 0, seeded = 0;
   for(unsigned seed = 1; seed <= 4; ++seed)
     for(const auto& family : families(seed))
       for(auto schedule : {ES::WORK_QUEUE, ES::PAPER_CYCLES})
@@ -376,8 +376,19 @@ TEST_CASE("Delaunay repair: every family and start ends equal to CGAL, in both s
         REQUIRE(r.non_delaunay_facets == 0);
         REQUIRE(ES::compare_with_delaunay(tr).identical);
         if(r.repair_path != ES::PLAIN_FLIPS) ++helped;
+        // On the work queue the helper step's first round visits only the
+        // facets plain flips left (fewer when its flips destroy some first).
+        if(schedule == ES::WORK_QUEUE && r.repair_path == ES::HELPER_FLIPS)
+        {
+          const auto& first_helper_round = r.cycles[r.number_of_cycles() - r.helper_rounds];
+          REQUIRE(first_helper_round.cycle == r.number_of_cycles() - r.helper_rounds + 1);
+          REQUIRE(first_helper_round.visits > 0);
+          REQUIRE(first_helper_round.visits <= std::size_t(r.stuck_after_plain_flips));
+          ++seeded;
+        }
       }
-  WARN("the repair went past plain flips in " << helped << " runs");
+  WARN("the repair went past plain flips in " << helped << " runs, " << seeded << " of them on the work queue");
+  REQUIRE(seeded > 0);
 }
 
 TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")

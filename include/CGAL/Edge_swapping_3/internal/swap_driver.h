@@ -18,6 +18,7 @@
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/prefetch.h>
 #include <functional>
 #include <type_traits>
 #include <vector>
@@ -49,21 +50,6 @@ void shuffle_uniformly(Vector& items, CGAL::Random& rng)
 {
   for(std::size_t k = items.size(); k > 1; --k)
     std::swap(items[k - 1], items[std::size_t(rng.get_int(0, int(k)))]);
-}
-
-/// Asks the processor for the memory a visit of `c`'s facets reads.
-template <class Cell_handle>
-void prefetch_around(Cell_handle c)
-{
-#if defined(__GNUC__)
-  for(int k = 0; k < 4; ++k)
-  {
-    __builtin_prefetch(&*c->neighbor(k));
-    __builtin_prefetch(&*c->vertex(k));
-  }
-#else
-  (void)c;
-#endif
 }
 
 /// Of the two finite cells of an interior facet, the one whose opposite vertex
@@ -211,6 +197,42 @@ public:
     Swap_report report = (settings_.schedule == WORK_QUEUE) ? run_work_queue(visit) : run_cycles(visit);
     report.seconds = timer.time();
     return report;
+  }
+
+  /// Makes the first round of the work queue visit `facets` only, instead
+  /// of every interior facet: for a rule that does nothing elsewhere (the
+  /// helper without tags does nothing on a Delaunay facet).
+  void seed(const std::vector<Key>& facets)
+  {
+    for(const Key& key : facets)
+    {
+      Cell_handle c;
+      int i;
+      if(find_facet(tr_, key, Cell_handle(), c, i) && queued_.emplace(key, c).second) next_.push_back(key);
+    }
+  }
+
+  /// After a work-queue run: the interior facets that are not locally
+  /// Delaunay (from the kept list, or, if it was dropped, one pass over all).
+  std::vector<Key> non_delaunay_facets_kept() const
+  {
+    std::vector<Key> facets;
+    if(kept_overflow_)
+    {
+      for(Cell_handle c : tr_.finite_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(holds_facet(tr_, c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation))
+            facets.push_back(facet_key<Tr>(c, i));
+      return facets;
+    }
+    kept_.for_each([&](const Key& key) {
+      Cell_handle c;
+      int i;
+      if(find_facet(tr_, key, Cell_handle(), c, i) && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) &&
+         !is_locally_delaunay(tr_, c, i, settings_.perturbation))
+        facets.push_back(key);
+    });
+    return facets;
   }
 
   /// After a work-queue run: the facets that were not locally Delaunay at
@@ -385,8 +407,11 @@ private:
     Swap_report report;
     report.ending = CYCLE_LIMIT_REACHED;
 
-    // Round 1: every interior facet, cell by cell. A cell that a flip touched
-    // is skipped: its facets that still exist are queued for round 2.
+    // Round 1: every interior facet, cell by cell (unless seeded: then the
+    // seeds). A cell that a flip touched is skipped: its facets that still
+    // exist are queued for round 2.
+    const bool seeded = !next_.empty();
+    if(!seeded)
     {
       first_round_ = true;
       record_ = Cycle_record();
@@ -423,15 +448,8 @@ private:
         // The container itself, without a list: a flip may free or reuse cells
         // ahead of the iterator (touched: skipped) but never frees the cell
         // under it, which each flip made here reuses as its first new cell.
-        auto& cells = tr_.tds().cells();
-        for(auto it = cells.begin(); it != cells.end(); ++it)
-        {
-          // Two cells ahead, ask for its neighbours and vertices: round 1 is
-          // bound by these cache misses (measured: a quarter of its time).
-          auto ahead = it;
-          if(++ahead != cells.end() && ++ahead != cells.end()) prefetch_around(ahead);
-          visit_cell(it);
-        }
+        // Round 1 is bound by cache misses: the cells two ahead are prefetched.
+        for_each_cell_prefetching(tr_.tds().cells(), visit_cell);
       }
       current_cell_ = Cell_handle();
       first_round_ = false;
@@ -440,7 +458,7 @@ private:
     }
 
     std::vector<Key> round;
-    for(std::size_t r = 2; r <= settings_.max_rounds + 1; ++r)
+    for(std::size_t r = seeded ? 1 : 2; r <= settings_.max_rounds + 1; ++r)
     {
       if(next_.empty())
       {
