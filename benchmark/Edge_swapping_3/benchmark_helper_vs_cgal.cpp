@@ -10,7 +10,8 @@
 // DIR/stall_N.node/.ele, the cells around the facets that are still not
 // locally Delaunay (every cell with a vertex on one), and DIR/stall_N.txt,
 // each such facet with its five-point configuration and whether it is
-// swappable: what keeps the helper from ending there.
+// swappable: what keeps the helper from ending there. The progress on standard
+// error gives, after each round, a hash of the set of cells: a repeat is named.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -63,6 +64,33 @@ std::size_t write_stalled_region(const Triangulation& tr, const std::string& ste
   return stalled.size();
 }
 
+// An order-free hash of the set of cells (each cell by its vertices), kept
+// through every flip: equal hashes after two rounds say the triangulation
+// came back (up to a 2^-64 chance of collision), i.e. the run loops.
+struct Cell_set_hash
+{
+  std::uint64_t value = 0;
+
+  static std::uint64_t of(Triangulation::Cell_handle c)
+  {
+    std::array<std::uintptr_t, 4> v;
+    for(int i = 0; i < 4; ++i) v[i] = ES::internal::address_of(c->vertex(i));
+    std::sort(v.begin(), v.end());
+    std::uint64_t h = 0;
+    for(auto a : v) h = ES::internal::mix_bits(h ^ a);
+    return h;
+  }
+  void before_flip(const Triangulation&, const ES::Flip_plan<Triangulation>& plan)
+  {
+    for(int k = 0; k < plan.number_of_old_cells; ++k) value -= of(plan.old_cells[k]);
+  }
+  void after_flip(const Triangulation&, const ES::Flip_plan<Triangulation>&,
+                  const std::array<Triangulation::Cell_handle, 4>& created, int n)
+  {
+    for(int k = 0; k < n; ++k) value += of(created[k]);
+  }
+};
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -94,13 +122,22 @@ int main(int argc, char** argv)
       out[0] = t.time();
       CGAL::Real_timer clock;
       clock.start();
-      std::function<void(const ES::Cycle_record&)> progress = [&clock](const ES::Cycle_record& r) {
+      Cell_set_hash cells;
+      for(auto c : tr.all_cell_handles()) cells.value += Cell_set_hash::of(c);
+      std::map<std::uint64_t, std::size_t> seen; // hash after a round: the first such round
+      std::function<void(const ES::Cycle_record&)> progress = [&](const ES::Cycle_record& r) {
         std::cerr << "  round " << r.cycle << ": " << r.total_swaps() << " swaps, " << r.visits << " visits, "
-                  << clock.time() << " s\n";
+                  << clock.time() << " s, cells hash " << std::hex << cells.value << std::dec;
+        const auto first = seen.emplace(cells.value, r.cycle);
+        if(!first.second) std::cerr << " (the triangulation after round " << first.first->second << ")";
+        std::cerr << '\n';
       };
       // The work queue (the default), random face order.
       const ES::Swap_report report = CGAL::swap_edges_with_helper(
-        tr, ES::parameters::cycle_visitor(progress, CGAL::parameters::random_seed(1).number_of_iterations(max_cycles)));
+        tr, ES::parameters::cycle_visitor(progress, CGAL::parameters::random_seed(1).number_of_iterations(max_cycles).visitor(std::ref(cells))));
+      Cell_set_hash recomputed;
+      for(auto c : tr.all_cell_handles()) recomputed.value += Cell_set_hash::of(c);
+      if(recomputed.value != cells.value) std::cerr << "  the hash kept through the flips is wrong\n";
       const auto s = report.total_swaps();
       out[1] = report.seconds;
       out[2] = double(report.number_of_cycles());

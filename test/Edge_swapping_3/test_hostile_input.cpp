@@ -7,6 +7,7 @@
 #include "experiment_case.h"
 #include "experiment_summary.h"
 #include "output_files.h"
+#include "topcom_runner.h"
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
@@ -168,6 +169,20 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
   REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("fewer than four points"));
   c.points.push_back(Point(1, 1, 0));
   REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("coplanar"));
+}
+
+TEST_CASE("TOPCOM's temporary files are removed when its input is refused", "[hostile]")
+{
+  // A point TOPCOM cannot take (not an integer) used to leave the input file behind.
+  bool truncated = false;
+  const std::vector<Point> points = {Point(0.5, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+  REQUIRE_THROWS(edge_swap::topcom_triangulations(points, 10, truncated));
+  const std::string prefix = "edge_swap_topcom_" + std::to_string(::getpid()) + "_";
+  for(const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+  {
+    INFO(entry.path());
+    REQUIRE(entry.path().filename().string().rfind(prefix, 0) != 0);
+  }
 }
 
 TEST_CASE("Defect 6: threads that cannot start are reported - not fatal", "[hostile]")

@@ -32,6 +32,16 @@ inline std::vector<std::vector<std::array<std::size_t, 4>>> topcom_triangulation
   const std::string stem = (dir / ("edge_swap_topcom_" + std::to_string(::getpid()) + "_" +
                                    std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()))))
                                .string();
+  // Both files go on every path out, errors included (a bad point set used to leave the input behind).
+  struct Remove_on_exit
+  {
+    std::string stem;
+    ~Remove_on_exit()
+    {
+      std::remove((stem + ".in").c_str());
+      std::remove((stem + ".out").c_str());
+    }
+  } remove_on_exit{stem};
   {
     std::ofstream in(stem + ".in");
     try
@@ -50,8 +60,6 @@ inline std::vector<std::vector<std::array<std::size_t, 4>>> topcom_triangulation
   const int status = std::system(command.c_str());
   std::ifstream out(stem + ".out");
   auto triangulations = CGAL::Edge_swapping_3::IO::read_topcom_triangulations(out);
-  std::remove((stem + ".in").c_str());
-  std::remove((stem + ".out").c_str());
   if(status != 0 && triangulations.empty()) throw std::runtime_error("TOPCOM failed: " + command);
   truncated = triangulations.size() >= limit;
   return triangulations;
