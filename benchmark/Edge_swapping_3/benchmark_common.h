@@ -26,7 +26,7 @@ namespace ES = CGAL::Edge_swapping_3;
 // What a child measured, sent back through a pipe, and its peak memory.
 struct Measure
 {
-  double values[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+  double values[10] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
   double peak_mib = -1;
 };
 
