@@ -164,9 +164,10 @@ public:
     if(!queueing_) return;
     const Cell_handle c = conf.cell();
     const int i = conf.index();
+    const Key key = facet_key<Tr>(c, i);
     if(non_delaunay && !kept_overflow_)
     {
-      kept_.insert(facet_key<Tr>(c, i));
+      kept_.insert(key);
       // Past a sixteenth of the cells, the final count passes over every facet
       // (see number_of_non_delaunay_facets_left): stop keeping the list.
       if(16 * kept_.size() > tr_.number_of_cells())
@@ -178,7 +179,6 @@ public:
     Vertex_handle a, b;
     if(next_round)
     {
-      const Key key = facet_key<Tr>(c, i);
       if(queued_.emplace(key, c).second) next_.push_back(key);
     }
     else if(conf.depends_on_edge_ring(a, b))
