@@ -9,6 +9,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Random.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include "huge_pages.h"
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,17 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace ES = CGAL::Edge_swapping_3;
+
+// Every contender runs as `edge_swap` does, with glibc's huge pages
+// (tools/edge_swap/huge_pages.h): the benchmark starts itself again with
+// them, and its children (CGAL's, TetGen, the programs) inherit the setting.
+// GLIBC_TUNABLES=glibc.malloc.hugetlb=0 measures without them.
+inline void start_benchmark(char** argv)
+{
+  edge_swap::restart_with_huge_pages(argv);
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  std::printf("GLIBC_TUNABLES=%s\n", tunables ? tunables : "");
+}
 
 // What a child measured, sent back through a pipe, and its peak memory.
 struct Measure

@@ -30,6 +30,7 @@ typedef K::Point_3 Point;
 
 int main(int argc, char** argv)
 {
+  start_benchmark(argv);
   std::vector<std::size_t> sizes;
   for(int a = 1; a < argc; ++a) sizes.push_back(std::stoul(argv[a]));
   if(sizes.empty()) sizes = {100000, 1000000};

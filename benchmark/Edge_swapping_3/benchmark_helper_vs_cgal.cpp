@@ -95,6 +95,7 @@ struct Cell_set_hash
 
 int main(int argc, char** argv)
 {
+  start_benchmark(argv);
   std::vector<std::size_t> sizes;
   std::size_t max_cycles = 1000;
   std::string stall_dir;

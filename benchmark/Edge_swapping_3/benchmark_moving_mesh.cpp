@@ -95,6 +95,7 @@ std::size_t build_moved(Triangulation& tr, const std::vector<Point>& points, dou
 
 int main(int argc, char** argv)
 {
+  start_benchmark(argv);
   std::vector<double> sizes = {100000}, moves = {0.001, 0.01, 0.1};
   std::string contenders = "repair,helper,cycles";
   bool programs = false;

@@ -50,6 +50,7 @@ std::pair<double, std::size_t> interior_dihedral_extremes(const Triangulation& t
 
 int main(int argc, char** argv)
 {
+  start_benchmark(argv);
   std::vector<std::size_t> sizes;
   for(int a = 1; a < argc; ++a) sizes.push_back(std::stoul(argv[a]));
   if(sizes.empty()) sizes = {100000, 1000000};

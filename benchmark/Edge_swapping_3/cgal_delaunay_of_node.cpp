@@ -3,11 +3,14 @@
 // writes it as Y.node and Y.ele, with the package's reader and writers.
 //
 //   cgal_delaunay_of_node IN.node OUT.ele
+//
+// It runs with huge pages, as edge_swap does (tools/edge_swap/huge_pages.h).
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include "huge_pages.h"
 #include <fstream>
 #include <iostream>
 
@@ -20,6 +23,7 @@ namespace IO = CGAL::Edge_swapping_3::IO;
 int main(int argc, char** argv)
 {
   if(argc != 3) { std::cerr << "usage: cgal_delaunay_of_node IN.node OUT.ele\n"; return 2; }
+  edge_swap::restart_with_huge_pages(argv); // as edge_swap does
   const auto node = IO::read_node_file(argv[1]);
   std::vector<std::pair<K::Point_3, std::size_t>> points;
   for(std::size_t k = 0; k < node.points.size(); ++k)

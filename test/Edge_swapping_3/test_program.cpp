@@ -6,6 +6,8 @@
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <random>
 #include <sstream>
 #include "program_runner.h"
 
@@ -96,29 +98,37 @@ TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are
     cells.push_back({index(c->vertex(0)->point()), index(c->vertex(1)->point()), index(c->vertex(2)->point()),
                      index(c->vertex(3)->point())});
   std::vector<Tr::Vertex_handle> vertices;
+  // The builder in the file's order and in the Hilbert order of the points.
+  const std::size_t hilbert_order_above = GENERATE(std::size_t(0), std::size_t(100000));
+  CAPTURE(hilbert_order_above);
+  auto build = [&](Tr& tr, const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& tets,
+                   std::vector<Tr::Vertex_handle>& v) {
+    std::vector<Tr::Cell_handle> handles;
+    return ES::internal::build_triangulation_from_cells(tr, points, tets, v, handles, hilbert_order_above);
+  };
   {
     Tr tr;
-    REQUIRE(ES::build_triangulation_from_cells(tr, corners, cells, vertices).empty());
+    REQUIRE(build(tr, corners, cells, vertices).empty());
     REQUIRE(ES::compare_with_delaunay(tr).identical);
   }
   {
     auto bad = cells;
     std::swap(bad[1][0], bad[1][1]);
     Tr tr;
-    REQUIRE(ES::build_triangulation_from_cells(tr, corners, bad, vertices).find("inverted") != std::string::npos);
+    REQUIRE(build(tr, corners, bad, vertices).find("inverted") != std::string::npos);
     REQUIRE(tr.number_of_vertices() == 0);
   }
   {
     auto bad = cells;
     for(auto& t : bad) std::swap(t[0], t[1]); // all reversed: a consistent other convention, accepted
     Tr tr;
-    REQUIRE(ES::build_triangulation_from_cells(tr, corners, bad, vertices).empty());
+    REQUIRE(build(tr, corners, bad, vertices).empty());
   }
   {
     auto bad = cells;
     bad.push_back(bad.front()); // a facet shared by more than two tetrahedra
     Tr tr;
-    const std::string why = ES::build_triangulation_from_cells(tr, corners, bad, vertices);
+    const std::string why = build(tr, corners, bad, vertices);
     REQUIRE((why.find("more than two") != std::string::npos || why.find("repeated") != std::string::npos));
   }
   {
@@ -127,7 +137,7 @@ TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are
     auto twice = cells;
     twice.insert(twice.end(), cells.begin(), cells.end());
     Tr tr;
-    const std::string why = ES::build_triangulation_from_cells(tr, corners, twice, vertices);
+    const std::string why = build(tr, corners, twice, vertices);
     INFO(why);
     REQUIRE((why.find("more than two") != std::string::npos || why.find("repeated") != std::string::npos));
   }
@@ -139,7 +149,7 @@ TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are
       auto bad = cells;
       bad.erase(bad.begin() + std::ptrdiff_t(k));
       Tr tr;
-      const std::string why = ES::build_triangulation_from_cells(tr, corners, bad, vertices);
+      const std::string why = build(tr, corners, bad, vertices);
       INFO("without tetrahedron " << k << ": " << why);
       REQUIRE_FALSE(why.empty());
     }
@@ -148,9 +158,39 @@ TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are
     // Overlap: a tetrahedron and its mirror image through a shared facet pointing the same way.
     const std::vector<Point> p = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(1, 1, 1)};
     Tr tr;
-    const std::string why = ES::build_triangulation_from_cells(tr, p, {{0, 1, 2, 3}, {0, 1, 2, 4}}, vertices);
+    const std::string why = build(tr, p, {{0, 1, 2, 3}, {0, 1, 2, 4}}, vertices);
     REQUIRE_FALSE(why.empty());
   }
+}
+
+TEST_CASE("Meshes built in the Hilbert order of their points are the meshes read", "[program]")
+{
+  const unsigned seed = 17;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(3000, seed);
+  Tr dt;
+  const auto dv = ES::insert_delaunay(dt, points);
+  std::map<Tr::Vertex_handle, std::size_t> index;
+  for(std::size_t k = 0; k < dv.size(); ++k) index[dv[k]] = k;
+  std::vector<std::array<std::size_t, 4>> cells;
+  for(auto c : dt.finite_cell_handles())
+    cells.push_back({index[c->vertex(0)], index[c->vertex(1)], index[c->vertex(2)], index[c->vertex(3)]});
+  std::shuffle(cells.begin(), cells.end(), std::mt19937(seed));
+  Tr tr;
+  std::vector<Tr::Vertex_handle> vertices;
+  std::vector<Tr::Cell_handle> handles;
+  REQUIRE(ES::internal::build_triangulation_from_cells(tr, points, cells, vertices, handles, 0).empty());
+  REQUIRE(tr.is_valid());
+  REQUIRE(ES::compare_with_delaunay(tr).identical);
+  // Each point has its vertex and each tetrahedron its cell, whatever the storage order.
+  for(std::size_t v = 0; v < points.size(); ++v) REQUIRE(vertices[v]->point() == points[v]);
+  for(std::size_t k = 0; k < cells.size(); ++k)
+    for(std::size_t v : cells[k]) REQUIRE(handles[k]->has_vertex(vertices[v]));
+  // The storage order is no longer the order given.
+  bool same_order = true;
+  std::size_t k = 0;
+  for(Tr::Cell_handle c : tr.finite_cell_handles()) same_order = same_order && c == handles[k++];
+  REQUIRE_FALSE(same_order);
 }
 
 TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")

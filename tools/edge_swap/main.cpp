@@ -2,6 +2,7 @@
 // reads, calls the library, writes. Exit 2 for bad options or input.
 
 #include "check_command.h"
+#include "huge_pages.h"
 #include "demo_command.h"
 #include "experiment_command.h"
 #include "shrink_command.h"
@@ -14,6 +15,7 @@
 int main(int argc, char** argv)
 {
   using namespace edge_swap;
+  restart_with_huge_pages(argv);
   CLI::App app{"edge_swap: 3-D edge swapping (Gandhi & Barth 1993) on CGAL triangulations"};
   app.require_subcommand(1);
 

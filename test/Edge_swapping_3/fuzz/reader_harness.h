@@ -28,6 +28,21 @@ inline void build_mesh(const std::string& name, const edge_swap::Input& in, Outc
   edge_swap::Triangulation tr;
   const std::string problem = in.is_mesh ? edge_swap::build_mesh(tr, in)
                                          : CGAL::Edge_swapping_3::point_set_problem(in.points, edge_swap::K());
+  if(in.is_mesh)
+  {
+    // Large meshes are built in the Hilbert order of their points: that
+    // order must give the same verdict as the file's.
+    edge_swap::Triangulation file_order, hilbert_order;
+    std::vector<edge_swap::Triangulation::Vertex_handle> vertices;
+    std::vector<edge_swap::Triangulation::Cell_handle> cells;
+    namespace ES = CGAL::Edge_swapping_3;
+    const bool in_file_order = ES::internal::build_triangulation_from_cells(file_order, in.points, in.cells, vertices, cells,
+                                                                            in.cells.size()).empty();
+    const bool in_hilbert_order =
+        ES::internal::build_triangulation_from_cells(hilbert_order, in.points, in.cells, vertices, cells, 0).empty();
+    if(in_file_order != in_hilbert_order) throw std::logic_error("the Hilbert order changed the verdict on a mesh");
+    if(in_hilbert_order && !hilbert_order.is_valid()) throw std::logic_error("a mesh built in Hilbert order is not valid");
+  }
   if(!problem.empty()) { o.message = name + ": " + problem; return; }
   if(in.is_mesh && !tr.is_valid()) throw std::logic_error("a mesh that was accepted is not valid");
   o.accepted = true;
