@@ -261,6 +261,39 @@ TEST_CASE("optimize writes a mesh that reads back exactly - and check agrees", "
   REQUIRE(r.exit_code == 2);
 }
 
+TEST_CASE("The program gives the same output with and without huge pages", "[program]")
+{
+  // edge_swap starts itself again with glibc.malloc.hugetlb=1 added to
+  // GLIBC_TUNABLES, unless the variable names that tunable already.
+  Workdir w;
+  std::ostringstream node;
+  node.precision(17);
+  const auto points = random_in_cube(400, 5);
+  node << points.size() << " 3 0 0\n";
+  for(std::size_t k = 0; k < points.size(); ++k)
+    node << k << ' ' << points[k].x() << ' ' << points[k].y() << ' ' << points[k].z() << '\n';
+  w.write("cube.node", node.str());
+  const std::string args = "optimize " + w.path("cube.node") + " --criterion minmax-dihedral -o ";
+  const std::vector<std::pair<std::string, std::string>> runs = {
+      {"unset GLIBC_TUNABLES;", "unset.ele"},
+      {"export GLIBC_TUNABLES=glibc.malloc.hugetlb=0;", "off.ele"},
+      {"export GLIBC_TUNABLES=glibc.malloc.check=0;", "other.ele"}};
+  for(const auto& [prefix, output] : runs)
+  {
+    const Run r = w.run_with(prefix, args + w.path(output));
+    INFO(prefix << " stderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+  }
+  const std::string first = Workdir::slurp(w.path("unset.ele"));
+  REQUIRE(first.size() > 100);
+  REQUIRE(Workdir::slurp(w.path("off.ele")) == first);
+  REQUIRE(Workdir::slurp(w.path("other.ele")) == first);
+  // Bad input is still refused the same way after the restart.
+  const Run bad = w.run_with("unset GLIBC_TUNABLES;", "check " + w.path("missing.ele"));
+  REQUIRE(bad.exit_code == 2);
+  REQUIRE(bad.err.find("missing.node") != std::string::npos);
+}
+
 TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[program]")
 {
   Workdir w;
