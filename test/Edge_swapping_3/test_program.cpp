@@ -266,13 +266,12 @@ TEST_CASE("The program gives the same output with and without huge pages", "[pro
   // edge_swap starts itself again with glibc.malloc.hugetlb=1 added to
   // GLIBC_TUNABLES, unless the variable names that tunable already.
   Workdir w;
-  std::ostringstream node;
-  node.precision(17);
-  const auto points = random_in_cube(400, 5);
-  node << points.size() << " 3 0 0\n";
-  for(std::size_t k = 0; k < points.size(); ++k)
-    node << k << ' ' << points[k].x() << ' ' << points[k].y() << ' ' << points[k].z() << '\n';
-  w.write("cube.node", node.str());
+  std::vector<std::array<double, 3>> points;
+  for(const Point& p : random_in_cube(400, 5)) points.push_back({p.x(), p.y(), p.z()});
+  {
+    std::ofstream node(w.path("cube.node"));
+    CGAL::Edge_swapping_3::IO::write_node_file(node, points, {}, 0);
+  }
   const std::string args = "optimize " + w.path("cube.node") + " --criterion minmax-dihedral -o ";
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"unset GLIBC_TUNABLES;", "unset.ele"},
