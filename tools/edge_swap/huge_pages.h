@@ -31,7 +31,7 @@ inline void restart_with_huge_pages(char** argv)
   if(::setenv("GLIBC_TUNABLES", wanted.c_str(), 1) != 0) return;
   ::execv("/proc/self/exe", argv);
   // Not restarted (no /proc, say): the same program, with 4 KiB pages.
-  if(tunables) ::setenv("GLIBC_TUNABLES", tunables, 1);
+  if(tunables) ::setenv("GLIBC_TUNABLES", current.c_str(), 1);
   else ::unsetenv("GLIBC_TUNABLES");
 }
 

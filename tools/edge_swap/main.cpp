@@ -1,10 +1,11 @@
 // edge_swap: the command-line program of Edge_swapping_3. Parses options,
-// reads, calls the library, writes. Exit 2 for bad options or input.
+// reads, calls the library, writes. Exit 2 for bad options or input. It first
+// starts itself again with glibc's huge pages (huge_pages.h).
 
 #include "check_command.h"
-#include "huge_pages.h"
 #include "demo_command.h"
 #include "experiment_command.h"
+#include "huge_pages.h"
 #include "shrink_command.h"
 #include "mesh_domain_command.h"
 #include "optimize_command.h"
