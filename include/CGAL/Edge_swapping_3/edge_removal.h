@@ -1,0 +1,356 @@
+// Edge removal (Shewchuk, "Two discrete optimization algorithms for the
+// topological improvement of tetrahedral meshes", 2002): the n tetrahedra
+// around an interior edge ab are replaced by the 2n-4 tetrahedra that join a
+// and b to a triangulation of the ring of vertices around the edge. Of the
+// triangulations of the ring polygon, the one whose worst tetrahedron is best
+// is found by Klincsek's dynamic program (O(n^3)). n = 3 is the 3-2 flip and
+// n = 4 the 4-4 flip; edge removal is their generalization.
+
+#ifndef CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
+#define CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/enum.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// What `remove_edge` did.
+enum Edge_removal_outcome
+{
+  EDGE_REMOVED,           ///< the edge is gone: 2n-4 tetrahedra replace its n
+  EDGE_ON_HULL,           ///< a tetrahedron around the edge is infinite (not handled yet)
+  RING_TOO_LARGE,         ///< more tetrahedra around the edge than `maximum_ring_size`
+  EDGE_CONSTRAINED,       ///< a facet around the edge is constrained, or two subdomains meet there
+  NO_VALID_TRIANGULATION, ///< no triangulation of the ring gives positive tetrahedra only
+  NO_IMPROVEMENT          ///< the best triangulation of the ring is not better than the tetrahedra there
+};
+
+inline const char* edge_removal_outcome_name(Edge_removal_outcome o)
+{
+  static const char* names[] = {"removed", "on the hull", "ring too large", "constrained", "no valid triangulation",
+                                "no improvement"};
+  return names[o];
+}
+
+/// The report of `remove_edge`.
+struct Edge_removal_report
+{
+  Edge_removal_outcome outcome = NO_VALID_TRIANGULATION;
+  int ring_size = 0;            ///< n: the tetrahedra around the edge
+  double quality_before = 0;    ///< the worst value of the measure over those n tetrahedra
+  double quality_after = 0;     ///< the worst over the best triangulation's 2n-4 (when one is valid)
+  int new_cells = 0;            ///< 2n-4 when removed, else 0
+
+  bool removed() const { return outcome == EDGE_REMOVED; }
+};
+
+namespace internal_np {
+enum maximum_ring_size_t { maximum_ring_size };
+} // namespace internal_np
+
+namespace parameters {
+/// `int`: the largest number of tetrahedra around an edge that `remove_edge`
+/// considers (default 10).
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t> maximum_ring_size(const T& value)
+{
+  return CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t>(value);
+}
+template <class T, class T2, class Tag, class Base>
+CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t, CGAL::Named_function_parameters<T2, Tag, Base>>
+maximum_ring_size(const T& value, const CGAL::Named_function_parameters<T2, Tag, Base>& np)
+{
+  return {value, np};
+}
+} // namespace parameters
+
+namespace internal {
+
+/// The cells around edge (a, b) and the ring of vertices s_0 ... s_{n-1}
+/// around it, turning so that cell k is (a, b, s_k, s_{k+1}) with
+/// orientation(a, b, s_k, s_{k+1}) NEGATIVE (decided from the cells' own
+/// vertex order, which is positive, not from coordinates).
+template <class Tr>
+struct Edge_star
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+
+  Vertex_handle a, b;
+  std::vector<Cell_handle> cells;
+  std::vector<Vertex_handle> ring;
+  bool on_hull = false;
+
+  Edge_star(const Tr& tr, const typename Tr::Edge& e, int maximum)
+    : a(e.first->vertex(e.second)), b(e.first->vertex(e.third))
+  {
+    auto circ = tr.incident_cells(e), done = circ;
+    do
+    {
+      if(tr.is_infinite(circ)) on_hull = true;
+      cells.push_back(circ);
+      ++circ;
+    } while(circ != done && int(cells.size()) <= maximum);
+    if(on_hull || int(cells.size()) > maximum) return;
+    const std::size_t n = cells.size();
+    // s_k is shared by cells k-1 and k.
+    ring.resize(n);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const Cell_handle prev = cells[(k + n - 1) % n], cur = cells[k];
+      for(int m = 0; m < 4; ++m)
+      {
+        const Vertex_handle v = cur->vertex(m);
+        if(v != a && v != b && prev->has_vertex(v)) { ring[k] = v; break; }
+      }
+    }
+    if(permutation_sign(cells[0], {a, b, ring[0], ring[1 % n]}) > 0)
+    {
+      // Turn the other way: cell k must hold s_k and s_{k+1}.
+      std::reverse(ring.begin(), ring.end());
+      std::reverse(cells.begin(), cells.end());
+      std::rotate(ring.rbegin(), ring.rbegin() + 1, ring.rend());
+    }
+  }
+
+  /// +1 when `t` is an even permutation of the vertices of `c`, else -1.
+  static int permutation_sign(Cell_handle c, const std::array<Vertex_handle, 4>& t)
+  {
+    std::array<int, 4> p;
+    for(int k = 0; k < 4; ++k) p[k] = c->index(t[k]);
+    int sign = 1;
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j)
+        if(p[i] > p[j]) sign = -sign;
+    return sign;
+  }
+};
+
+/// Klincsek's dynamic program over the triangulations of the ring polygon
+/// s_0 ... s_{n-1}: the triangulation whose worst tetrahedron (the two
+/// joining each triangle to a and to b) scores highest, among those whose
+/// every tetrahedron is positively oriented (exact predicate).
+template <class Tr, class Score>
+class Ring_triangulation
+{
+public:
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 4> Tuple;
+
+  Ring_triangulation(const Tr& tr, const Edge_star<Tr>& star, const Score& score)
+    : n_(int(star.ring.size())), best_(n_ * n_, -HUGE_VAL), split_(n_ * n_, -1)
+  {
+    auto orientation = tr.geom_traits().orientation_3_object();
+    const auto& s = star.ring;
+    // The two tetrahedra of triangle (i, k, j), i < k < j, positively
+    // oriented as tuples; -inf when either is not positive.
+    auto triangle_score = [&](int i, int k, int j) {
+      const Tuple ta = {star.a, s[j], s[k], s[i]}, tb = {star.b, s[i], s[k], s[j]};
+      for(const Tuple& t : {ta, tb})
+        if(orientation(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()) != POSITIVE) return -HUGE_VAL;
+      return (std::min)(score(ta), score(tb));
+    };
+    for(int i = 0; i + 1 < n_; ++i) best_[i * n_ + i + 1] = HUGE_VAL; // an edge of the polygon
+    for(int gap = 2; gap < n_; ++gap)
+      for(int i = 0; i + gap < n_; ++i)
+      {
+        const int j = i + gap;
+        for(int k = i + 1; k < j; ++k)
+        {
+          const double sides = (std::min)(best_[i * n_ + k], best_[k * n_ + j]);
+          if(!(sides > -HUGE_VAL)) continue;
+          const double value = (std::min)(sides, triangle_score(i, k, j));
+          if(value > -HUGE_VAL && value > best_[i * n_ + j])
+          {
+            best_[i * n_ + j] = value;
+            split_[i * n_ + j] = k;
+          }
+        }
+      }
+    if(n_ >= 3 && split_[n_ - 1] >= 0) collect(star, 0, n_ - 1);
+  }
+
+  bool exists() const { return !cells_.empty(); }
+  /// The worst score of the best triangulation.
+  double score() const { return best_[n_ - 1]; }
+  /// Its 2n-4 tetrahedra, positively oriented.
+  const std::vector<Tuple>& cells() const { return cells_; }
+
+private:
+  void collect(const Edge_star<Tr>& star, int i, int j)
+  {
+    if(j - i < 2) return;
+    const int k = split_[i * n_ + j];
+    const auto& s = star.ring;
+    cells_.push_back({star.a, s[j], s[k], s[i]});
+    cells_.push_back({star.b, s[i], s[k], s[j]});
+    collect(star, i, k);
+    collect(star, k, j);
+  }
+
+  int n_;
+  std::vector<double> best_;
+  std::vector<int> split_;
+  std::vector<Tuple> cells_;
+};
+
+/// Replaces the cells of `star` by `new_cells`, glued to the outside and to
+/// each other; the new cells take the cell data of the old ones and each keeps
+/// the facet data of the outer facet it takes over. Returns the new cells.
+template <class Tr, class Constraints>
+std::vector<typename Tr::Cell_handle> replace_edge_star(Tr& tr, const Edge_star<Tr>& star,
+                                                        const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells,
+                                                        const Constraints& constraints)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  auto& tds = tr.tds();
+  struct Slot
+  {
+    std::array<Vertex_handle, 3> v; // sorted by address: only to match facets
+    Cell_handle cell;
+    int index;
+    typename Constraints::Facet_data data;
+    bool glued = false;
+  };
+  auto slot_of = [](Cell_handle c, int i) {
+    Slot s;
+    s.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+    std::sort(s.v.begin(), s.v.end(), [](Vertex_handle x, Vertex_handle y) { return &*x < &*y; });
+    s.cell = c;
+    s.index = i;
+    return s;
+  };
+  // The outer facets: each old cell's facets opposite a and opposite b.
+  std::vector<Slot> outside;
+  for(Cell_handle c : star.cells)
+    for(Vertex_handle apex : {star.a, star.b})
+    {
+      const int i = c->index(apex);
+      Slot o = slot_of(c, i);
+      o.cell = c->neighbor(i);
+      o.index = o.cell->index(c);
+      o.data = constraints.facet_data(c, i);
+      outside.push_back(o);
+    }
+  const auto cell_data = constraints.cell_data(star.cells.front());
+  std::vector<Cell_handle> created;
+  for(const auto& t : new_cells)
+  {
+    created.push_back(tds.create_cell(t[0], t[1], t[2], t[3]));
+    constraints.set_cell_data(created.back(), cell_data);
+  }
+  std::vector<Slot> inner;
+  for(Cell_handle c : created)
+    for(int i = 0; i < 4; ++i)
+    {
+      const Slot f = slot_of(c, i);
+      bool glued = false;
+      for(Slot& o : outside)
+        if(!o.glued && o.v == f.v)
+        {
+          c->set_neighbor(i, o.cell);
+          o.cell->set_neighbor(o.index, c);
+          constraints.set_facet_data(c, i, o.data);
+          o.glued = glued = true;
+          break;
+        }
+      for(std::size_t m = 0; m < inner.size() && !glued; ++m)
+        if(!inner[m].glued && inner[m].v == f.v)
+        {
+          c->set_neighbor(i, inner[m].cell);
+          inner[m].cell->set_neighbor(inner[m].index, c);
+          constraints.set_facet_data(c, i, constraints.free_facet_data());
+          constraints.set_facet_data(inner[m].cell, inner[m].index, constraints.free_facet_data());
+          inner[m].glued = glued = true;
+        }
+      if(!glued) inner.push_back(f);
+    }
+  CGAL_assertion_code(for(const Slot& o : outside) CGAL_assertion(o.glued);)
+  CGAL_assertion_code(for(const Slot& f : inner) CGAL_assertion(f.glued);)
+  for(Cell_handle c : created)
+    for(int i = 0; i < 4; ++i) c->vertex(i)->set_cell(c);
+  for(Cell_handle c : star.cells) tds.delete_cell(c);
+  return created;
+}
+
+} // namespace internal
+
+/// Removes the interior edge `e` of `tr` when a triangulation of its ring
+/// makes the worst tetrahedron there better under `criterion` (MinMax or
+/// MaxMin dihedral angle, an aspect ratio, or any
+/// `Worst_tetrahedron_criterion`): the n tetrahedra around the edge are
+/// replaced by the 2n-4 of the best triangulation of the ring (Klincsek's
+/// dynamic program), each new tetrahedron positively oriented by the exact
+/// predicate. The improvement must exceed the criterion's relative tolerance,
+/// as for a flip. Cell handles around the edge are invalidated.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
+///     an edge with a constrained facet around it, or between two subdomains, is kept \cgalParamNEnd
+///   \cgalParamNBegin{maximum_ring_size} the largest ring considered, default 10 \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
+                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 4> Tuple;
+  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+
+  Edge_removal_report report;
+  const internal::Edge_star<Tr> star(tr, e, maximum);
+  report.ring_size = int(star.cells.size());
+  if(star.on_hull) { report.outcome = EDGE_ON_HULL; return report; }
+  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
+  const int n = report.ring_size;
+  for(int k = 0; k < n; ++k)
+  {
+    const auto c = star.cells[k];
+    // The facet (a, b, s_{k+1}) lies between cells k and k+1.
+    if(!constraints.same_subdomain(c, star.cells.front()) ||
+       constraints.is_facet_constrained(c, c->index(star.ring[k])))
+    {
+      report.outcome = EDGE_CONSTRAINED;
+      return report;
+    }
+  }
+
+  // Scores: larger is better.
+  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
+  double before = HUGE_VAL;
+  for(const auto c : star.cells)
+    before = (std::min)(before, score(internal::tuple_of<Tr>(c)));
+  report.quality_before = larger_is_worse ? -before : before;
+
+  const internal::Ring_triangulation<Tr, decltype(score)> best(tr, star, score);
+  if(!best.exists()) { report.outcome = NO_VALID_TRIANGULATION; return report; }
+  report.quality_after = larger_is_worse ? -best.score() : best.score();
+  const double tolerance = criterion.relative_tolerance;
+  const bool better = larger_is_worse ? report.quality_after < report.quality_before * (1 - tolerance)
+                                      : report.quality_after > report.quality_before * (1 + tolerance);
+  if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
+
+  report.new_cells = int(internal::replace_edge_star(tr, star, best.cells(), constraints).size());
+  report.outcome = EDGE_REMOVED;
+  return report;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H

@@ -1,0 +1,338 @@
+// Edge removal: hand-built rings of 3 to 7 tetrahedra with exact coordinates,
+// Klincsek's dynamic program against every triangulation of the ring,
+// constraints, the hull, and random sequences of removals on a Delaunay mesh.
+
+#include "test_common.h"
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <cmath>
+#include <functional>
+#include <random>
+
+using namespace test;
+
+namespace {
+
+typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                             CGAL::Triangulation_cell_base_with_info_3<ES::Domain_cell_info, K>>
+  Domain_tds;
+typedef CGAL::Triangulation_3<K, Domain_tds> Domain_tr;
+
+/// The n tetrahedra around the edge from a = (0, 0, h) to b = (0, 0, -h), its
+/// ring the points `ring` (in turning order). Point 0 is a, 1 is b.
+template <class T>
+std::vector<typename T::Vertex_handle> build_star(T& tr, double h, const std::vector<Point>& ring)
+{
+  std::vector<Point> points = {Point(0, 0, h), Point(0, 0, -h)};
+  points.insert(points.end(), ring.begin(), ring.end());
+  std::vector<std::array<std::size_t, 4>> cells;
+  const std::size_t n = ring.size();
+  for(std::size_t k = 0; k < n; ++k) cells.push_back({0, 1, 2 + k, 2 + (k + 1) % n});
+  std::vector<typename T::Vertex_handle> vertices;
+  const std::string problem = ES::build_triangulation_from_cells(tr, points, cells, vertices);
+  INFO(problem);
+  REQUIRE(problem.empty());
+  return vertices;
+}
+
+std::vector<Point> regular_ring(int n, double radius = 1)
+{
+  std::vector<Point> ring;
+  for(int k = 0; k < n; ++k)
+  {
+    const double t = 2 * 3.14159265358979323846 * k / n;
+    ring.emplace_back(radius * std::cos(t), radius * std::sin(t), 0.0);
+  }
+  return ring;
+}
+
+template <class T>
+typename T::Edge edge_of(const T& tr, typename T::Vertex_handle u, typename T::Vertex_handle v)
+{
+  typename T::Cell_handle c;
+  int i, j;
+  REQUIRE(tr.is_edge(u, v, c, i, j));
+  return typename T::Edge(c, i, j);
+}
+
+template <class T>
+bool every_cell_positive(const T& tr)
+{
+  for(auto c : tr.finite_cell_handles())
+    if(CGAL::orientation(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                         c->vertex(3)->point()) != CGAL::POSITIVE)
+      return false;
+  return true;
+}
+
+/// The finite cells as sorted point quadruples (equal sets, equal meshes).
+template <class T>
+std::vector<Cell_points> cell_set_of(const T& tr)
+{
+  auto less = [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; };
+  std::vector<Cell_points> cells;
+  for(auto c : tr.finite_cell_handles())
+  {
+    Cell_points p = {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()};
+    std::sort(p.begin(), p.end(), less);
+    cells.push_back(p);
+  }
+  std::sort(cells.begin(), cells.end(), [&](const Cell_points& a, const Cell_points& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+  });
+  return cells;
+}
+
+double smallest_angle(const Point& p, const Point& q, const Point& r, const Point& s)
+{
+  return ES::Smallest_dihedral_angle()(p, q, r, s);
+}
+
+template <class T>
+double worst_smallest_angle(const T& tr)
+{
+  double worst = HUGE_VAL;
+  for(auto c : tr.finite_cell_handles())
+    worst = std::min(worst, smallest_angle(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                           c->vertex(3)->point()));
+  return worst;
+}
+
+template <class T>
+double worst_largest_angle(const T& tr)
+{
+  double worst = 0;
+  for(auto c : tr.finite_cell_handles())
+    worst = std::max(worst, ES::Largest_dihedral_angle()(c->vertex(0)->point(), c->vertex(1)->point(),
+                                                         c->vertex(2)->point(), c->vertex(3)->point()));
+  return worst;
+}
+
+/// Every triangulation of the polygon s_i ... s_j: the best worst score, or
+/// -inf when none has positive tetrahedra only (written apart from the
+/// dynamic program: plain recursion over the triangle on edge (i, j)).
+double best_by_enumeration(const ES::internal::Edge_star<Tr>& star, int i, int j)
+{
+  if(j - i < 2) return HUGE_VAL;
+  double best = -HUGE_VAL;
+  for(int k = i + 1; k < j; ++k)
+  {
+    const Point a = star.a->point(), b = star.b->point();
+    const Point si = star.ring[i]->point(), sk = star.ring[k]->point(), sj = star.ring[j]->point();
+    double here = HUGE_VAL;
+    // The triangle (i, k, j) seen from a and from b: both must be positive.
+    if(CGAL::orientation(a, sj, sk, si) != CGAL::POSITIVE || CGAL::orientation(b, si, sk, sj) != CGAL::POSITIVE)
+      continue;
+    here = std::min(smallest_angle(a, sj, sk, si), smallest_angle(b, si, sk, sj));
+    here = std::min({here, best_by_enumeration(star, i, k), best_by_enumeration(star, k, j)});
+    best = std::max(best, here);
+  }
+  return best;
+}
+
+} // namespace
+
+TEST_CASE("Edge removal replaces the n tetrahedra of a ring by the best 2n-4", "[edge removal]")
+{
+  for(int n = 3; n <= 7; ++n)
+  {
+    CAPTURE(n);
+    Tr tr;
+    // A long edge: its n tetrahedra are needles with dihedral angles near
+    // 180 degrees at the ring; those of the ring's triangulation are better.
+    const auto v = build_star(tr, 5.0, regular_ring(n));
+    const auto volume = exact_volume(tr);
+    const double before = worst_largest_angle(tr);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Min_max_dihedral_angle_criterion());
+    INFO(ES::edge_removal_outcome_name(r.outcome));
+    REQUIRE(r.outcome == ES::EDGE_REMOVED);
+    REQUIRE(r.ring_size == n);
+    REQUIRE(r.new_cells == 2 * n - 4);
+    REQUIRE(tr.number_of_finite_cells() == std::size_t(2 * n - 4));
+    REQUIRE(tr.is_valid());
+    REQUIRE(every_cell_positive(tr));
+    REQUIRE(exact_volume(tr) == volume);
+    Tr::Cell_handle c;
+    int i, j;
+    REQUIRE_FALSE(tr.is_edge(v[0], v[1], c, i, j));
+    REQUIRE(r.quality_before == before);
+    REQUIRE(r.quality_after == worst_largest_angle(tr));
+    REQUIRE(r.quality_after < r.quality_before);
+  }
+}
+
+TEST_CASE("Edge removal - the dynamic program finds the best valid triangulation of the ring", "[edge removal]")
+{
+  // The rings of a Delaunay mesh of random points: not planar, often not
+  // convex, so many triangulations of a ring have inverted tetrahedra.
+  const unsigned seed = 29;
+  INFO("seed " << seed);
+  Tr tr;
+  ES::insert_delaunay(tr, random_in_cube(300, seed));
+  int valid = 0, invalid = 0;
+  for(auto e : tr.finite_edges())
+  {
+    bool hull = false;
+    int n = 0;
+    auto circ = tr.incident_cells(e), done = circ;
+    do { hull = hull || tr.is_infinite(circ); ++n; } while(++circ != done);
+    if(hull || n > 8) continue;
+    CAPTURE(n);
+    const ES::internal::Edge_star<Tr> star(tr, e, 10);
+    REQUIRE(int(star.ring.size()) == n);
+    auto score = [](const std::array<Tr::Vertex_handle, 4>& t) {
+      return smallest_angle(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point());
+    };
+    const ES::internal::Ring_triangulation<Tr, decltype(score)> dp(tr, star, score);
+    const double enumerated = best_by_enumeration(star, 0, n - 1);
+    if(!(enumerated > -HUGE_VAL))
+    {
+      ++invalid;
+      REQUIRE_FALSE(dp.exists());
+      continue;
+    }
+    ++valid;
+    REQUIRE(dp.exists());
+    REQUIRE(dp.score() == enumerated);
+    REQUIRE(dp.cells().size() == std::size_t(2 * n - 4));
+    for(const auto& t : dp.cells())
+      REQUIRE(CGAL::orientation(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()) == CGAL::POSITIVE);
+  }
+  WARN(valid << " rings with a valid triangulation, " << invalid << " without");
+  REQUIRE(valid > 100);
+  REQUIRE(invalid > 100);
+}
+
+TEST_CASE("Edge removal keeps constrained facets - subdomains - the hull", "[edge removal]")
+{
+  SECTION("a constrained facet around the edge")
+  {
+    Domain_tr tr;
+    const auto v = build_star(tr, 2.0, regular_ring(5));
+    for(auto c : tr.all_cell_handles()) c->info().subdomain = tr.is_infinite(c) ? 0 : 1;
+    // The facet (a, b, s_2), seen from both of its cells.
+    Domain_tr::Cell_handle c;
+    int i, j, k;
+    REQUIRE(tr.is_facet(v[0], v[1], v[4], c, i, j, k));
+    const int f = 6 - i - j - k;
+    c->info().facet_reference[f] = 7;
+    c->neighbor(f)->info().facet_reference[c->neighbor(f)->index(c)] = 7;
+    const auto cells = cell_set_of(tr);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
+                                   ES::parameters::mesh_constraints(ES::Domain_constraints()));
+    REQUIRE(r.outcome == ES::EDGE_CONSTRAINED);
+    REQUIRE(cell_set_of(tr) == cells);
+  }
+  SECTION("two subdomains around the edge")
+  {
+    Domain_tr tr;
+    const auto v = build_star(tr, 2.0, regular_ring(6));
+    int k = 0;
+    for(auto c : tr.all_cell_handles()) c->info().subdomain = tr.is_infinite(c) ? 0 : 1 + (k++ % 2);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
+                                   ES::parameters::mesh_constraints(ES::Domain_constraints()));
+    REQUIRE(r.outcome == ES::EDGE_CONSTRAINED);
+  }
+  SECTION("boundary references and the subdomain go to the new cells")
+  {
+    Domain_tr tr;
+    const auto v = build_star(tr, 5.0, regular_ring(6));
+    for(auto c : tr.all_cell_handles())
+    {
+      c->info().subdomain = tr.is_infinite(c) ? 0 : 3;
+      // Every hull facet is a boundary with reference 5, on both sides.
+      for(int i = 0; i < 4; ++i)
+        if(tr.is_infinite(c) != tr.is_infinite(c->neighbor(i))) c->info().facet_reference[i] = 5;
+    }
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Min_max_dihedral_angle_criterion(),
+                                   ES::parameters::mesh_constraints(ES::Domain_constraints()));
+    REQUIRE(r.outcome == ES::EDGE_REMOVED);
+    REQUIRE(tr.is_valid());
+    for(auto c : tr.finite_cell_handles())
+    {
+      REQUIRE(c->info().subdomain == 3);
+      for(int i = 0; i < 4; ++i)
+        REQUIRE(c->info().facet_reference[i] == (tr.is_infinite(c->neighbor(i)) ? 5 : ES::Domain_cell_info::no_reference));
+    }
+  }
+  SECTION("an edge on the hull, a ring too large")
+  {
+    Tr tr;
+    const auto v = build_star(tr, 2.0, regular_ring(7));
+    REQUIRE(ES::remove_edge(tr, edge_of(tr, v[2], v[3]), ES::Max_min_dihedral_angle_criterion()).outcome ==
+            ES::EDGE_ON_HULL);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
+                                   ES::parameters::maximum_ring_size(6));
+    REQUIRE(r.outcome == ES::RING_TOO_LARGE);
+    REQUIRE(tr.number_of_finite_cells() == 7);
+  }
+  SECTION("no improvement: the best ring triangulation is worse")
+  {
+    // A short edge through a wide ring: the smallest angle of its tetrahedra
+    // (at the ring's edges) is about twice that of the ring's triangulation.
+    Tr tr;
+    const auto v = build_star(tr, 0.05, regular_ring(4));
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion());
+    INFO(r.quality_before << " " << r.quality_after);
+    REQUIRE(r.outcome == ES::NO_IMPROVEMENT);
+    REQUIRE(r.quality_after < r.quality_before);
+    REQUIRE(tr.number_of_finite_cells() == 4);
+  }
+}
+
+TEST_CASE("Random sequences of edge removals keep validity - exact volume - and never worsen the worst angle",
+          "[edge removal]")
+{
+  for(unsigned seed : {3u, 4u})
+  {
+    INFO("seed " << seed);
+    Tr tr;
+    ES::insert_delaunay(tr, random_in_cube(400, seed));
+    const auto volume = exact_volume(tr);
+    double worst = worst_smallest_angle(tr);
+    std::size_t removed = 0, attempts = 0;
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
+      for(auto e : tr.finite_edges())
+      {
+        auto u = e.first->vertex(e.second), w = e.first->vertex(e.third);
+        if(CGAL::compare_xyz(w->point(), u->point()) == CGAL::SMALLER) std::swap(u, w);
+        edges.emplace_back(u, w);
+      }
+      // By coordinates, then shuffled: the sequence depends on the seed only,
+      // not on the storage order (which CGAL's spatial sort draws at random).
+      std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+        const auto c = CGAL::compare_xyz(x.first->point(), y.first->point());
+        return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xyz(x.second->point(), y.second->point()) == CGAL::SMALLER);
+      });
+      std::shuffle(edges.begin(), edges.end(), std::mt19937(seed + unsigned(pass)));
+      for(const auto& [u, w] : edges)
+      {
+        Tr::Cell_handle c;
+        int i, j;
+        if(!tr.is_edge(u, w, c, i, j)) continue;
+        const Tr::Edge e(c, i, j);
+        bool hull = false;
+        auto circ = tr.incident_cells(e), done = circ;
+        do hull = hull || tr.is_infinite(circ); while(++circ != done);
+        if(hull) continue;
+        ++attempts;
+        const auto r = ES::remove_edge(tr, e, ES::Max_min_dihedral_angle_criterion());
+        if(!r.removed()) continue;
+        ++removed;
+        REQUIRE(r.quality_after > r.quality_before);
+        const double now = worst_smallest_angle(tr);
+        REQUIRE(now >= worst);
+        worst = now;
+      }
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(exact_volume(tr) == volume);
+    }
+    WARN("seed " << seed << ": " << removed << " edges removed in " << attempts << " attempts; worst smallest angle "
+                 << worst);
+    REQUIRE(removed > 0);
+  }
+}
