@@ -4,6 +4,7 @@
 //
 //   CGAL::swap_edges(tr, criterion, np)        Algorithm 3, any criterion
 //   CGAL::swap_edges_with_helper(tr, np)       Algorithm 4, the helper strategy
+//   ES::remove_edge(tr, edge, criterion, np)   one edge removal (Edge_swapping_3/edge_removal.h)
 //
 // A driver is a schedule (a work queue, or the paper's cycles), a rule (what a
 // visit of a facet decides) and an ending (converged, stuck, limit reached).
@@ -18,6 +19,7 @@
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
 #include <CGAL/Edge_swapping_3/internal/swap_driver.h>

@@ -52,26 +52,6 @@ struct Edge_removal_report
   bool removed() const { return outcome == EDGE_REMOVED; }
 };
 
-namespace internal_np {
-enum maximum_ring_size_t { maximum_ring_size };
-} // namespace internal_np
-
-namespace parameters {
-/// `int`: the largest number of tetrahedra around an edge that `remove_edge`
-/// considers (default 10).
-template <class T>
-CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t> maximum_ring_size(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t>(value);
-}
-template <class T, class T2, class Tag, class Base>
-CGAL::Named_function_parameters<T, internal_np::maximum_ring_size_t, CGAL::Named_function_parameters<T2, Tag, Base>>
-maximum_ring_size(const T& value, const CGAL::Named_function_parameters<T2, Tag, Base>& np)
-{
-  return {value, np};
-}
-} // namespace parameters
-
 namespace internal {
 
 /// The cells around edge (a, b) and the ring of vertices s_0 ... s_{n-1}

@@ -21,6 +21,7 @@ enum cycle_visitor_t { cycle_visitor };
 enum mesh_constraints_t { mesh_constraints };
 enum delaunay_repair_t { delaunay_repair };
 enum helper_rounds_before_rebuild_t { helper_rounds_before_rebuild };
+enum maximum_ring_size_t { maximum_ring_size };
 
 } // namespace internal_np
 
@@ -58,6 +59,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(delaunay_repair)
 /// `std::size_t`: the rounds the helper step of the Delaunay repair may take
 /// before the rebuild (default 100).
 CGAL_EDGE_SWAPPING_3_PARAMETER(helper_rounds_before_rebuild)
+/// `int`: the largest number of tetrahedra around an edge that `remove_edge`
+/// considers (default 10).
+CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_ring_size)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 
