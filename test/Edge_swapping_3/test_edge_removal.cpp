@@ -8,6 +8,7 @@
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <random>
 
 using namespace test;
@@ -64,6 +65,27 @@ bool every_cell_positive(const T& tr)
                          c->vertex(3)->point()) != CGAL::POSITIVE)
       return false;
   return true;
+}
+
+/// Whether the finite cells, read back as a mesh, form a valid triangulation
+/// of the convex hull (the builder checks convexity, which is_valid does not).
+bool rebuilds_as_convex_mesh(const Tr& tr)
+{
+  std::map<Tr::Vertex_handle, std::size_t> index;
+  std::vector<Point> points;
+  for(auto v : tr.finite_vertex_handles())
+  {
+    index[v] = points.size();
+    points.push_back(v->point());
+  }
+  std::vector<std::array<std::size_t, 4>> cells;
+  for(auto c : tr.finite_cell_handles())
+    cells.push_back({index[c->vertex(0)], index[c->vertex(1)], index[c->vertex(2)], index[c->vertex(3)]});
+  Tr copy;
+  std::vector<Tr::Vertex_handle> vertices;
+  const std::string problem = ES::build_triangulation_from_cells(copy, points, cells, vertices);
+  INFO(problem);
+  return problem.empty();
 }
 
 /// The finite cells as sorted point quadruples (equal sets, equal meshes).
@@ -256,15 +278,18 @@ TEST_CASE("Edge removal keeps constrained facets - subdomains - the hull", "[edg
         REQUIRE(c->info().facet_reference[i] == (tr.is_infinite(c->neighbor(i)) ? 5 : ES::Domain_cell_info::no_reference));
     }
   }
-  SECTION("an edge on the hull, a ring too large")
+  SECTION("an edge where the hull is not flat, a ring too large")
   {
     Tr tr;
     const auto v = build_star(tr, 2.0, regular_ring(7));
-    REQUIRE(ES::remove_edge(tr, edge_of(tr, v[2], v[3]), ES::Max_min_dihedral_angle_criterion()).outcome ==
-            ES::EDGE_ON_HULL);
-    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
-                                   ES::parameters::maximum_ring_size(6));
-    REQUIRE(r.outcome == ES::RING_TOO_LARGE);
+    const auto cells = cell_set_of(tr);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[2], v[3]), ES::Max_min_dihedral_angle_criterion());
+    REQUIRE(r.on_hull);
+    REQUIRE(r.outcome == ES::NO_VALID_TRIANGULATION);
+    REQUIRE(cell_set_of(tr) == cells);
+    const auto big = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
+                                     ES::parameters::maximum_ring_size(6));
+    REQUIRE(big.outcome == ES::RING_TOO_LARGE);
     REQUIRE(tr.number_of_finite_cells() == 7);
   }
   SECTION("no improvement: the best ring triangulation is worse")
@@ -281,17 +306,70 @@ TEST_CASE("Edge removal keeps constrained facets - subdomains - the hull", "[edg
   }
 }
 
+TEST_CASE("Edge removal on the hull - where the hull is flat around the edge", "[edge removal]")
+{
+  // a and b on the hull plane z = 0, with s_0 and s_3: the square (a, s_0, b,
+  // s_3) is split by ab; s_1 and s_2 above. Removing ab splits the square by
+  // s_0 s_3 instead: 3 tetrahedra become 4, 2 infinite cells stay 2.
+  for(const double lift : {0.0, 0.2, -0.2})
+  {
+    CAPTURE(lift);
+    const std::vector<Point> points = {Point(-5, 0, 0), Point(5, 0, 0),     Point(0, -1, 0),
+                                       Point(0, -0.5, 1), Point(0, 0.5, 1), Point(0, 1, lift)};
+    const std::vector<std::array<std::size_t, 4>> cells = {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}};
+    Tr tr;
+    std::vector<Tr::Vertex_handle> v;
+    const std::string problem = ES::build_triangulation_from_cells(tr, points, cells, v);
+    if(lift < 0)
+    {
+      REQUIRE_FALSE(problem.empty()); // the hull would not be convex at ab
+      continue;
+    }
+    REQUIRE(problem.empty());
+    const auto volume = exact_volume(tr);
+    const auto before = cell_set_of(tr);
+    const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Min_max_dihedral_angle_criterion());
+    INFO(ES::edge_removal_outcome_name(r.outcome) << " " << r.quality_before << " " << r.quality_after);
+    REQUIRE(r.on_hull);
+    REQUIRE(r.ring_size == 5);
+    if(lift > 0)
+    {
+      // Not flat: the new hull facets would not be convex.
+      REQUIRE(r.outcome == ES::NO_VALID_TRIANGULATION);
+      REQUIRE(cell_set_of(tr) == before);
+      continue;
+    }
+    REQUIRE(r.outcome == ES::EDGE_REMOVED);
+    REQUIRE(r.new_cells == 6);
+    REQUIRE(tr.number_of_finite_cells() == 4);
+    REQUIRE(tr.is_valid());
+    REQUIRE(every_cell_positive(tr));
+    REQUIRE(rebuilds_as_convex_mesh(tr));
+    REQUIRE(exact_volume(tr) == volume);
+    REQUIRE(r.quality_after == worst_largest_angle(tr));
+  }
+}
+
 TEST_CASE("Random sequences of edge removals keep validity - exact volume - and never worsen the worst angle",
           "[edge removal]")
 {
   for(unsigned seed : {3u, 4u})
   {
     INFO("seed " << seed);
+    // Points on the cube's faces too: the hull is flat there, so hull edges
+    // can be removed.
+    auto points = random_in_cube(400, seed);
+    CGAL::Random random(seed);
+    for(int k = 0; k < 120; ++k)
+    {
+      const double x = random.get_double(), y = random.get_double(), side = double(k % 2);
+      points.push_back(k % 4 < 2 ? Point(x, y, side) : Point(side, x, y));
+    }
     Tr tr;
-    ES::insert_delaunay(tr, random_in_cube(400, seed));
+    ES::insert_delaunay(tr, points);
     const auto volume = exact_volume(tr);
     double worst = worst_smallest_angle(tr);
-    std::size_t removed = 0, attempts = 0;
+    std::size_t removed = 0, attempts = 0, on_hull = 0;
     for(int pass = 0; pass < 3; ++pass)
     {
       std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
@@ -314,14 +392,11 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
         int i, j;
         if(!tr.is_edge(u, w, c, i, j)) continue;
         const Tr::Edge e(c, i, j);
-        bool hull = false;
-        auto circ = tr.incident_cells(e), done = circ;
-        do hull = hull || tr.is_infinite(circ); while(++circ != done);
-        if(hull) continue;
         ++attempts;
         const auto r = ES::remove_edge(tr, e, ES::Max_min_dihedral_angle_criterion());
         if(!r.removed()) continue;
         ++removed;
+        if(r.on_hull) ++on_hull;
         REQUIRE(r.quality_after > r.quality_before);
         const double now = worst_smallest_angle(tr);
         REQUIRE(now >= worst);
@@ -329,10 +404,12 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
       }
       REQUIRE(tr.is_valid());
       REQUIRE(every_cell_positive(tr));
+      REQUIRE(rebuilds_as_convex_mesh(tr));
       REQUIRE(exact_volume(tr) == volume);
     }
-    WARN("seed " << seed << ": " << removed << " edges removed in " << attempts << " attempts; worst smallest angle "
-                 << worst);
+    WARN("seed " << seed << ": " << removed << " edges removed (" << on_hull << " on the hull) in " << attempts
+                 << " attempts; worst smallest angle " << worst);
     REQUIRE(removed > 0);
+    REQUIRE(on_hull > 0);
   }
 }

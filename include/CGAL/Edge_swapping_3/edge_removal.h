@@ -1,10 +1,13 @@
 // Edge removal (Shewchuk, "Two discrete optimization algorithms for the
 // topological improvement of tetrahedral meshes", 2002): the n tetrahedra
-// around an interior edge ab are replaced by the 2n-4 tetrahedra that join a
-// and b to a triangulation of the ring of vertices around the edge. Of the
+// around an edge ab are replaced by the 2n-4 tetrahedra that join a and b to
+// a triangulation of the ring of vertices around the edge. Of the
 // triangulations of the ring polygon, the one whose worst tetrahedron is best
 // is found by Klincsek's dynamic program (O(n^3)). n = 3 is the 3-2 flip and
-// n = 4 the 4-4 flip; edge removal is their generalization.
+// n = 4 the 4-4 flip; edge removal is their generalization. An edge on the
+// hull has the infinite vertex in its ring: a triangle of the ring through it
+// stands for two hull facets, which must keep the hull convex (they can only
+// where the hull is flat around the edge).
 
 #ifndef CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
 #define CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
@@ -26,7 +29,6 @@ namespace Edge_swapping_3 {
 enum Edge_removal_outcome
 {
   EDGE_REMOVED,           ///< the edge is gone: 2n-4 tetrahedra replace its n
-  EDGE_ON_HULL,           ///< a tetrahedron around the edge is infinite (not handled yet)
   RING_TOO_LARGE,         ///< more tetrahedra around the edge than `maximum_ring_size`
   EDGE_CONSTRAINED,       ///< a facet around the edge is constrained, or two subdomains meet there
   NO_VALID_TRIANGULATION, ///< no triangulation of the ring gives positive tetrahedra only
@@ -35,8 +37,7 @@ enum Edge_removal_outcome
 
 inline const char* edge_removal_outcome_name(Edge_removal_outcome o)
 {
-  static const char* names[] = {"removed", "on the hull", "ring too large", "constrained", "no valid triangulation",
-                                "no improvement"};
+  static const char* names[] = {"removed", "ring too large", "constrained", "no valid triangulation", "no improvement"};
   return names[o];
 }
 
@@ -44,10 +45,11 @@ inline const char* edge_removal_outcome_name(Edge_removal_outcome o)
 struct Edge_removal_report
 {
   Edge_removal_outcome outcome = NO_VALID_TRIANGULATION;
-  int ring_size = 0;            ///< n: the tetrahedra around the edge
-  double quality_before = 0;    ///< the worst value of the measure over those n tetrahedra
-  double quality_after = 0;     ///< the worst over the best triangulation's 2n-4 (when one is valid)
-  int new_cells = 0;            ///< 2n-4 when removed, else 0
+  int ring_size = 0;            ///< n: the cells around the edge (infinite ones included)
+  bool on_hull = false;         ///< whether the edge is on the hull (two of those cells are infinite)
+  double quality_before = 0;    ///< the worst value of the measure over the finite ones
+  double quality_after = 0;     ///< the worst over the best triangulation's finite cells (when one is valid)
+  int new_cells = 0;            ///< 2n-4 (infinite ones included) when removed, else 0
 
   bool removed() const { return outcome == EDGE_REMOVED; }
 };
@@ -57,7 +59,8 @@ namespace internal {
 /// The cells around edge (a, b) and the ring of vertices s_0 ... s_{n-1}
 /// around it, turning so that cell k is (a, b, s_k, s_{k+1}) with
 /// orientation(a, b, s_k, s_{k+1}) NEGATIVE (decided from the cells' own
-/// vertex order, which is positive, not from coordinates).
+/// vertex order, which is positive, not from coordinates). On the hull, the
+/// ring is rotated so that the infinite vertex is last.
 template <class Tr>
 struct Edge_star
 {
@@ -79,7 +82,7 @@ struct Edge_star
       cells.push_back(circ);
       ++circ;
     } while(circ != done && int(cells.size()) <= maximum);
-    if(on_hull || int(cells.size()) > maximum) return;
+    if(int(cells.size()) > maximum) return;
     const std::size_t n = cells.size();
     // s_k is shared by cells k-1 and k.
     ring.resize(n);
@@ -99,6 +102,14 @@ struct Edge_star
       std::reverse(cells.begin(), cells.end());
       std::rotate(ring.rbegin(), ring.rbegin() + 1, ring.rend());
     }
+    // The infinite vertex last: s_{n-1} = infinite, cell n-1 is (a, b, inf, s_0).
+    for(std::size_t k = 0; k < n; ++k)
+      if(tr.is_infinite(ring[k]))
+      {
+        std::rotate(ring.begin(), ring.begin() + (k + 1) % n, ring.end());
+        std::rotate(cells.begin(), cells.begin() + (k + 1) % n, cells.end());
+        break;
+      }
   }
 
   /// +1 when `t` is an even permutation of the vertices of `c`, else -1.
@@ -117,7 +128,9 @@ struct Edge_star
 /// Klincsek's dynamic program over the triangulations of the ring polygon
 /// s_0 ... s_{n-1}: the triangulation whose worst tetrahedron (the two
 /// joining each triangle to a and to b) scores highest, among those whose
-/// every tetrahedron is positively oriented (exact predicate).
+/// every tetrahedron is positively oriented (exact predicate). A cell with
+/// the infinite vertex is valid when no vertex of the star lies strictly
+/// beyond its hull facet (`planned_cell_orientation`), and has no score.
 template <class Tr, class Score>
 class Ring_triangulation
 {
@@ -128,15 +141,22 @@ public:
   Ring_triangulation(const Tr& tr, const Edge_star<Tr>& star, const Score& score)
     : n_(int(star.ring.size())), best_(n_ * n_, -HUGE_VAL), split_(n_ * n_, -1)
   {
-    auto orientation = tr.geom_traits().orientation_3_object();
     const auto& s = star.ring;
+    std::vector<Vertex_handle> others(s.begin(), s.end());
+    others.push_back(star.a);
+    others.push_back(star.b);
+    auto valued = [&](const Tuple& t) {
+      for(const auto& v : t)
+        if(tr.is_infinite(v)) return HUGE_VAL;
+      return double(score(t));
+    };
     // The two tetrahedra of triangle (i, k, j), i < k < j, positively
     // oriented as tuples; -inf when either is not positive.
     auto triangle_score = [&](int i, int k, int j) {
       const Tuple ta = {star.a, s[j], s[k], s[i]}, tb = {star.b, s[i], s[k], s[j]};
       for(const Tuple& t : {ta, tb})
-        if(orientation(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()) != POSITIVE) return -HUGE_VAL;
-      return (std::min)(score(ta), score(tb));
+        if(planned_cell_orientation(tr, t, others.data(), int(others.size())) != POSITIVE) return -HUGE_VAL;
+      return (std::min)(valued(ta), valued(tb));
     };
     for(int i = 0; i + 1 < n_; ++i) best_[i * n_ + i + 1] = HUGE_VAL; // an edge of the polygon
     for(int gap = 2; gap < n_; ++gap)
@@ -159,7 +179,7 @@ public:
   }
 
   bool exists() const { return !cells_.empty(); }
-  /// The worst score of the best triangulation.
+  /// The worst score of the best triangulation (+inf: no finite cell).
   double score() const { return best_[n_ - 1]; }
   /// Its 2n-4 tetrahedra, positively oriented.
   const std::vector<Tuple>& cells() const { return cells_; }
@@ -221,12 +241,16 @@ std::vector<typename Tr::Cell_handle> replace_edge_star(Tr& tr, const Edge_star<
       o.data = constraints.facet_data(c, i);
       outside.push_back(o);
     }
-  const auto cell_data = constraints.cell_data(star.cells.front());
+  // Finite cells take the data of a finite old cell, infinite ones that of
+  // an infinite old cell (outside the domain).
+  Cell_handle finite_model = star.cells.front(), infinite_model = star.cells.front();
+  for(Cell_handle c : star.cells) (tr.is_infinite(c) ? infinite_model : finite_model) = c;
+  const auto finite_data = constraints.cell_data(finite_model), infinite_data = constraints.cell_data(infinite_model);
   std::vector<Cell_handle> created;
   for(const auto& t : new_cells)
   {
     created.push_back(tds.create_cell(t[0], t[1], t[2], t[3]));
-    constraints.set_cell_data(created.back(), cell_data);
+    constraints.set_cell_data(created.back(), tr.is_infinite(created.back()) ? infinite_data : finite_data);
   }
   std::vector<Slot> inner;
   for(Cell_handle c : created)
@@ -264,14 +288,17 @@ std::vector<typename Tr::Cell_handle> replace_edge_star(Tr& tr, const Edge_star<
 
 } // namespace internal
 
-/// Removes the interior edge `e` of `tr` when a triangulation of its ring
+/// Removes the finite edge `e` of `tr` when a triangulation of its ring
 /// makes the worst tetrahedron there better under `criterion` (MinMax or
 /// MaxMin dihedral angle, an aspect ratio, or any
-/// `Worst_tetrahedron_criterion`): the n tetrahedra around the edge are
+/// `Worst_tetrahedron_criterion`): the n cells around the edge are
 /// replaced by the 2n-4 of the best triangulation of the ring (Klincsek's
 /// dynamic program), each new tetrahedron positively oriented by the exact
-/// predicate. The improvement must exceed the criterion's relative tolerance,
-/// as for a flip. Cell handles around the edge are invalidated.
+/// predicate. On the hull, the ring holds the infinite vertex, and the new
+/// hull facets must keep the hull convex: possible only where the hull is
+/// flat around the edge. The improvement must exceed the criterion's
+/// relative tolerance, as for a flip. Cell handles around the edge are
+/// invalidated.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
@@ -294,15 +321,17 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   Edge_removal_report report;
   const internal::Edge_star<Tr> star(tr, e, maximum);
   report.ring_size = int(star.cells.size());
-  if(star.on_hull) { report.outcome = EDGE_ON_HULL; return report; }
+  report.on_hull = star.on_hull;
   if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
   const int n = report.ring_size;
   for(int k = 0; k < n; ++k)
   {
     const auto c = star.cells[k];
-    // The facet (a, b, s_{k+1}) lies between cells k and k+1.
-    if(!constraints.same_subdomain(c, star.cells.front()) ||
-       constraints.is_facet_constrained(c, c->index(star.ring[k])))
+    // The facet (a, b, s_{k+1}) lies between cells k and k+1 (cell 0 is finite).
+    const int f = c->index(star.ring[k]);
+    if((!tr.is_infinite(c) && !constraints.same_subdomain(c, star.cells.front())) ||
+       (!tr.is_infinite(star.ring[(k + 1) % n]) &&
+        (constraints.is_facet_constrained(c, f) || constraints.is_facet_constrained(c->neighbor(f), c->neighbor(f)->index(c)))))
     {
       report.outcome = EDGE_CONSTRAINED;
       return report;
@@ -314,7 +343,7 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
   double before = HUGE_VAL;
   for(const auto c : star.cells)
-    before = (std::min)(before, score(internal::tuple_of<Tr>(c)));
+    if(!tr.is_infinite(c)) before = (std::min)(before, score(internal::tuple_of<Tr>(c)));
   report.quality_before = larger_is_worse ? -before : before;
 
   const internal::Ring_triangulation<Tr, decltype(score)> best(tr, star, score);
