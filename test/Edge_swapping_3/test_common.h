@@ -28,7 +28,8 @@ namespace ES = CGAL::Edge_swapping_3;
 typedef std::array<Point, 4> Cell_points;
 
 /// The finite cells as sorted point quadruples: equal sets mean equal triangulations.
-inline std::vector<Cell_points> cell_set(const Tr& tr)
+template <class T>
+std::vector<Cell_points> cell_set(const T& tr)
 {
   std::vector<Cell_points> cells;
   auto less = [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; };

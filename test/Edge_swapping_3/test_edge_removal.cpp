@@ -88,24 +88,6 @@ bool rebuilds_as_convex_mesh(const Tr& tr)
   return problem.empty();
 }
 
-/// The finite cells as sorted point quadruples (equal sets, equal meshes).
-template <class T>
-std::vector<Cell_points> cell_set_of(const T& tr)
-{
-  auto less = [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; };
-  std::vector<Cell_points> cells;
-  for(auto c : tr.finite_cell_handles())
-  {
-    Cell_points p = {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()};
-    std::sort(p.begin(), p.end(), less);
-    cells.push_back(p);
-  }
-  std::sort(cells.begin(), cells.end(), [&](const Cell_points& a, const Cell_points& b) {
-    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
-  });
-  return cells;
-}
-
 double smallest_angle(const Point& p, const Point& q, const Point& r, const Point& s)
 {
   return ES::Smallest_dihedral_angle()(p, q, r, s);
@@ -240,11 +222,11 @@ TEST_CASE("Edge removal keeps constrained facets - subdomains - the hull", "[edg
     const int f = 6 - i - j - k;
     c->info().facet_reference[f] = 7;
     c->neighbor(f)->info().facet_reference[c->neighbor(f)->index(c)] = 7;
-    const auto cells = cell_set_of(tr);
+    const auto cells = cell_set(tr);
     const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
                                    ES::parameters::mesh_constraints(ES::Domain_constraints()));
     REQUIRE(r.outcome == ES::EDGE_CONSTRAINED);
-    REQUIRE(cell_set_of(tr) == cells);
+    REQUIRE(cell_set(tr) == cells);
   }
   SECTION("two subdomains around the edge")
   {
@@ -282,11 +264,11 @@ TEST_CASE("Edge removal keeps constrained facets - subdomains - the hull", "[edg
   {
     Tr tr;
     const auto v = build_star(tr, 2.0, regular_ring(7));
-    const auto cells = cell_set_of(tr);
+    const auto cells = cell_set(tr);
     const auto r = ES::remove_edge(tr, edge_of(tr, v[2], v[3]), ES::Max_min_dihedral_angle_criterion());
     REQUIRE(r.on_hull);
     REQUIRE(r.outcome == ES::NO_VALID_TRIANGULATION);
-    REQUIRE(cell_set_of(tr) == cells);
+    REQUIRE(cell_set(tr) == cells);
     const auto big = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(),
                                      ES::parameters::maximum_ring_size(6));
     REQUIRE(big.outcome == ES::RING_TOO_LARGE);
@@ -327,7 +309,7 @@ TEST_CASE("Edge removal on the hull - where the hull is flat around the edge", "
     }
     REQUIRE(problem.empty());
     const auto volume = exact_volume(tr);
-    const auto before = cell_set_of(tr);
+    const auto before = cell_set(tr);
     const auto r = ES::remove_edge(tr, edge_of(tr, v[0], v[1]), ES::Min_max_dihedral_angle_criterion());
     INFO(ES::edge_removal_outcome_name(r.outcome) << " " << r.quality_before << " " << r.quality_after);
     REQUIRE(r.on_hull);
@@ -336,7 +318,7 @@ TEST_CASE("Edge removal on the hull - where the hull is flat around the edge", "
     {
       // Not flat: the new hull facets would not be convex.
       REQUIRE(r.outcome == ES::NO_VALID_TRIANGULATION);
-      REQUIRE(cell_set_of(tr) == before);
+      REQUIRE(cell_set(tr) == before);
       continue;
     }
     REQUIRE(r.outcome == ES::EDGE_REMOVED);
