@@ -5,6 +5,7 @@
 //   CGAL::swap_edges(tr, criterion, np)        Algorithm 3, any criterion
 //   CGAL::swap_edges_with_helper(tr, np)       Algorithm 4, the helper strategy
 //   ES::remove_edge(tr, edge, criterion, np)   one edge removal (Edge_swapping_3/edge_removal.h)
+//   ES::improve_worst_tetrahedra(tr, criterion, np)  worst first: edge removal and flips
 //
 // A driver is a schedule (a work queue, or the paper's cycles), a rule (what a
 // visit of a facet decides) and an ending (converged, stuck, limit reached).
@@ -20,6 +21,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
 #include <CGAL/Edge_swapping_3/internal/swap_driver.h>

@@ -288,6 +288,65 @@ std::vector<typename Tr::Cell_handle> replace_edge_star(Tr& tr, const Edge_star<
 
 } // namespace internal
 
+namespace internal {
+
+/// `remove_edge` with its settings spelled out; the new cells (finite and
+/// infinite) are appended to `created`.
+template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
+                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                const Constraints& constraints, int maximum,
+                                std::vector<typename Tr::Cell_handle>& created)
+{
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef std::array<Vertex_handle, 4> Tuple;
+  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+
+  Edge_removal_report report;
+  const Edge_star<Tr> star(tr, e, maximum);
+  report.ring_size = int(star.cells.size());
+  report.on_hull = star.on_hull;
+  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
+  const int n = report.ring_size;
+  for(int k = 0; k < n; ++k)
+  {
+    const auto c = star.cells[k];
+    // The facet (a, b, s_{k+1}) lies between cells k and k+1 (cell 0 is finite).
+    const int f = c->index(star.ring[k]);
+    if((!tr.is_infinite(c) && !constraints.same_subdomain(c, star.cells.front())) ||
+       (!tr.is_infinite(star.ring[(k + 1) % n]) &&
+        (constraints.is_facet_constrained(c, f) || constraints.is_facet_constrained(c->neighbor(f), c->neighbor(f)->index(c)))))
+    {
+      report.outcome = EDGE_CONSTRAINED;
+      return report;
+    }
+  }
+
+  // Scores: larger is better.
+  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
+  double before = HUGE_VAL;
+  for(const auto c : star.cells)
+    if(!tr.is_infinite(c)) before = (std::min)(before, score(tuple_of<Tr>(c)));
+  report.quality_before = larger_is_worse ? -before : before;
+
+  const Ring_triangulation<Tr, decltype(score)> best(tr, star, score);
+  if(!best.exists()) { report.outcome = NO_VALID_TRIANGULATION; return report; }
+  report.quality_after = larger_is_worse ? -best.score() : best.score();
+  const double tolerance = criterion.relative_tolerance;
+  const bool better = larger_is_worse ? report.quality_after < report.quality_before * (1 - tolerance)
+                                      : report.quality_after > report.quality_before * (1 + tolerance);
+  if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
+
+  const auto cells = replace_edge_star(tr, star, best.cells(), constraints);
+  created.insert(created.end(), cells.begin(), cells.end());
+  report.new_cells = int(cells.size());
+  report.outcome = EDGE_REMOVED;
+  return report;
+}
+
+} // namespace internal
+
 /// Removes the finite edge `e` of `tr` when a triangulation of its ring
 /// makes the worst tetrahedron there better under `criterion` (MinMax or
 /// MaxMin dihedral angle, an aspect ratio, or any
@@ -312,51 +371,10 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef std::array<Vertex_handle, 4> Tuple;
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
-  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
-
-  Edge_removal_report report;
-  const internal::Edge_star<Tr> star(tr, e, maximum);
-  report.ring_size = int(star.cells.size());
-  report.on_hull = star.on_hull;
-  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
-  const int n = report.ring_size;
-  for(int k = 0; k < n; ++k)
-  {
-    const auto c = star.cells[k];
-    // The facet (a, b, s_{k+1}) lies between cells k and k+1 (cell 0 is finite).
-    const int f = c->index(star.ring[k]);
-    if((!tr.is_infinite(c) && !constraints.same_subdomain(c, star.cells.front())) ||
-       (!tr.is_infinite(star.ring[(k + 1) % n]) &&
-        (constraints.is_facet_constrained(c, f) || constraints.is_facet_constrained(c->neighbor(f), c->neighbor(f)->index(c)))))
-    {
-      report.outcome = EDGE_CONSTRAINED;
-      return report;
-    }
-  }
-
-  // Scores: larger is better.
-  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
-  auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
-  double before = HUGE_VAL;
-  for(const auto c : star.cells)
-    if(!tr.is_infinite(c)) before = (std::min)(before, score(internal::tuple_of<Tr>(c)));
-  report.quality_before = larger_is_worse ? -before : before;
-
-  const internal::Ring_triangulation<Tr, decltype(score)> best(tr, star, score);
-  if(!best.exists()) { report.outcome = NO_VALID_TRIANGULATION; return report; }
-  report.quality_after = larger_is_worse ? -best.score() : best.score();
-  const double tolerance = criterion.relative_tolerance;
-  const bool better = larger_is_worse ? report.quality_after < report.quality_before * (1 - tolerance)
-                                      : report.quality_after > report.quality_before * (1 + tolerance);
-  if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
-
-  report.new_cells = int(internal::replace_edge_star(tr, star, best.cells(), constraints).size());
-  report.outcome = EDGE_REMOVED;
-  return report;
+  std::vector<typename Tr::Cell_handle> created;
+  return internal::remove_edge(tr, e, criterion, constraints, maximum, created);
 }
 
 } // namespace Edge_swapping_3

@@ -22,6 +22,7 @@ enum mesh_constraints_t { mesh_constraints };
 enum delaunay_repair_t { delaunay_repair };
 enum helper_rounds_before_rebuild_t { helper_rounds_before_rebuild };
 enum maximum_ring_size_t { maximum_ring_size };
+enum operations_t { operations };
 
 } // namespace internal_np
 
@@ -62,6 +63,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(helper_rounds_before_rebuild)
 /// `int`: the largest number of tetrahedra around an edge that `remove_edge`
 /// considers (default 10).
 CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_ring_size)
+/// `unsigned`: the operations of `improve_worst_tetrahedra`, bits of
+/// `Quality_operation` (default `ALL_OPERATIONS`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(operations)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 

@@ -1,10 +1,13 @@
-// Edge removal: hand-built rings of 3 to 7 tetrahedra with exact coordinates,
-// Klincsek's dynamic program against every triangulation of the ring,
-// constraints, the hull, and random sequences of removals on a Delaunay mesh.
+// The quality operations. Edge removal: hand-built rings of 3 to 7
+// tetrahedra with exact coordinates, Klincsek's dynamic program against every
+// triangulation of the ring, constraints, the hull, and random sequences of
+// removals on a Delaunay mesh. The quality driver (worst first): validity,
+// exact volume, the worst value, its ending, determinism, domain meshes.
 
 #include "test_common.h"
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <cmath>
 #include <functional>
@@ -111,6 +114,20 @@ double worst_largest_angle(const T& tr)
     worst = std::max(worst, ES::Largest_dihedral_angle()(c->vertex(0)->point(), c->vertex(1)->point(),
                                                          c->vertex(2)->point(), c->vertex(3)->point()));
   return worst;
+}
+
+/// The cells with a dihedral angle above 165 degrees (MinMax) or below 10 (MaxMin).
+template <class T>
+std::size_t poor_cells(const T& tr, bool largest)
+{
+  std::size_t n = 0;
+  for(auto c : tr.finite_cell_handles())
+  {
+    const auto& p0 = c->vertex(0)->point(); const auto& p1 = c->vertex(1)->point();
+    const auto& p2 = c->vertex(2)->point(); const auto& p3 = c->vertex(3)->point();
+    if(largest ? ES::Largest_dihedral_angle()(p0, p1, p2, p3) > 165 : smallest_angle(p0, p1, p2, p3) < 10) ++n;
+  }
+  return n;
 }
 
 /// Every triangulation of the polygon s_i ... s_j: the best worst score, or
@@ -394,4 +411,118 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
     REQUIRE(removed > 0);
     REQUIRE(on_hull > 0);
   }
+}
+
+TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - and ends where no operation helps",
+          "[quality driver]")
+{
+  const unsigned seed = 8;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(500, seed);
+  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::EDGE_REMOVAL), unsigned(ES::ALL_OPERATIONS)})
+    for(bool minmax : {false, true})
+    {
+      CAPTURE(operations, minmax);
+      Tr tr;
+      ES::insert_delaunay(tr, points);
+      const auto volume = exact_volume(tr);
+      const std::size_t poor_before = poor_cells(tr, minmax);
+      const auto np = ES::parameters::operations(operations);
+      const auto r = minmax ? ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), np)
+                            : ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np);
+      REQUIRE(r.ending == ES::CONVERGED);
+      REQUIRE(r.number_of_operations() > 0);
+      const bool removals = (operations & ES::EDGE_REMOVAL) != 0, flips = (operations & ES::FLIPS) != 0;
+      REQUIRE((removals || r.edge_removals == 0));
+      REQUIRE((flips || r.number_of_operations() == r.edge_removals));
+      const double worst_now = minmax ? worst_largest_angle(tr) : worst_smallest_angle(tr);
+      REQUIRE(r.worst_after == worst_now);
+      // The worst cells of a random point set are slivers on the hull, which
+      // no operation reaches: the worst value may stay; the poor cells go.
+      if(minmax) REQUIRE(r.worst_after <= r.worst_before);
+      else REQUIRE(r.worst_after >= r.worst_before);
+      REQUIRE(poor_cells(tr, minmax) < poor_before);
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(rebuilds_as_convex_mesh(tr));
+      REQUIRE(exact_volume(tr) == volume);
+      WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
+                         << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
+                         << " by " << r.edge_removals << " edge removals and "
+                         << r.number_of_operations() - r.edge_removals << " flips; " << r.visits << " visits, "
+                         << r.stuck << " stuck");
+      // Converged: no cell has an operation that helps, so a second run changes nothing.
+      const auto cells = cell_set(tr);
+      const auto again = minmax ? ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), np)
+                                : ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np);
+      REQUIRE(again.number_of_operations() == 0);
+      REQUIRE(cell_set(tr) == cells);
+      // The same start gives the same mesh (no address decides).
+      Tr other;
+      ES::insert_delaunay(other, points);
+      if(minmax) ES::improve_worst_tetrahedra(other, ES::Min_max_dihedral_angle_criterion(), np);
+      else ES::improve_worst_tetrahedra(other, ES::Max_min_dihedral_angle_criterion(), np);
+      REQUIRE(cell_set(other) == cells);
+    }
+}
+
+TEST_CASE("The quality driver keeps the subdomains and the constrained facets of a domain mesh", "[quality driver]")
+{
+  const unsigned seed = 12;
+  INFO("seed " << seed);
+  Domain_tr tr;
+  ES::insert_delaunay(tr, random_in_cube(600, seed));
+  // Two subdomains, split by x = 0.5 at the cells' centroids; their interface
+  // and the hull are constrained.
+  auto side = [&](Domain_tr::Cell_handle c) {
+    double x = 0;
+    for(int i = 0; i < 4; ++i) x += c->vertex(i)->point().x();
+    return x < 2 ? 1 : 2;
+  };
+  for(auto c : tr.all_cell_handles()) c->info().subdomain = tr.is_infinite(c) ? 0 : side(c);
+  for(auto c : tr.all_cell_handles())
+    for(int i = 0; i < 4; ++i)
+      if(c->info().subdomain != c->neighbor(i)->info().subdomain)
+        c->info().facet_reference[i] = (tr.is_infinite(c) || tr.is_infinite(c->neighbor(i))) ? 5 : 7;
+  auto subdomain_volumes = [&]() {
+    std::array<CGAL::Exact_rational, 3> v;
+    for(auto c : tr.finite_cell_handles())
+      v[c->info().subdomain] +=
+        exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+    return v;
+  };
+  auto constrained_facets = [&]() {
+    std::vector<std::pair<std::array<Point, 3>, int>> facets;
+    for(auto c : tr.finite_cell_handles())
+      for(int i = 0; i < 4; ++i)
+        if(c->info().facet_reference[i] != ES::Domain_cell_info::no_reference)
+        {
+          std::array<Point, 3> p = {c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(),
+                                    c->vertex((i + 3) & 3)->point()};
+          std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+          facets.emplace_back(p, c->info().facet_reference[i]);
+        }
+    std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) {
+      for(int k = 0; k < 3; ++k)
+      {
+        const auto o = CGAL::compare_xyz(a.first[k], b.first[k]);
+        if(o != CGAL::EQUAL) return o == CGAL::SMALLER;
+      }
+      return a.second < b.second;
+    });
+    return facets;
+  };
+  const auto volumes = subdomain_volumes();
+  const auto facets = constrained_facets();
+  const auto r = ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(),
+                                              ES::parameters::mesh_constraints(ES::Domain_constraints()));
+  REQUIRE(r.ending == ES::CONVERGED);
+  REQUIRE(r.number_of_operations() > 0);
+  REQUIRE(r.worst_after >= r.worst_before);
+  REQUIRE(tr.is_valid());
+  REQUIRE(subdomain_volumes() == volumes);
+  REQUIRE(constrained_facets() == facets);
+  for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
+  WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.number_of_operations() - r.edge_removals
+                       << " flips; worst smallest angle " << r.worst_before << " -> " << r.worst_after);
 }

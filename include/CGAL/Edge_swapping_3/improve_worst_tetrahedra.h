@@ -1,0 +1,189 @@
+// The quality driver: hill climbing on the worst tetrahedra first. A heap
+// holds the finite cells by the criterion's measure, worst on top; the worst
+// cell is taken and the operations are tried on it in a fixed order (edge
+// removal on its six edges, then the flip of each of its four facets); the
+// first that improves the worst tetrahedron of its neighbourhood is made, and
+// the cells that share an edge with a new cell (their operations changed) go
+// into the heap. The run ends when the heap is empty: then no operation
+// improves any cell, and a second run makes no change.
+
+#ifndef CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
+#define CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <queue>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// The operations of the quality driver, as bits.
+enum Quality_operation : unsigned
+{
+  FLIPS = 1,        ///< 2-3, 3-2, 2-2 and 4-4 flips of the cell's facets
+  EDGE_REMOVAL = 2, ///< edge removal on the cell's edges
+  ALL_OPERATIONS = FLIPS | EDGE_REMOVAL
+};
+
+/// The report of `improve_worst_tetrahedra`.
+struct Quality_report
+{
+  Swap_ending ending = CONVERGED;               ///< CONVERGED (heap empty) or CYCLE_LIMIT_REACHED (operation limit)
+  std::size_t visits = 0;                       ///< cells taken from the heap that still existed
+  std::size_t stuck = 0;                        ///< of those, the cells no operation improved
+  std::size_t edge_removals = 0;                ///< edges removed
+  std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
+  double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells
+  double seconds = 0;
+
+  std::size_t number_of_operations() const
+  {
+    std::size_t n = edge_removals;
+    for(std::size_t f : flips) n += f;
+    return n;
+  }
+};
+
+namespace internal {
+
+template <class Tr>
+struct Worst_cell_entry
+{
+  double score; // larger is better
+  std::size_t order; // ties: first pushed, first taken (no address decides)
+  std::array<typename Tr::Vertex_handle, 4> vertices;
+
+  bool operator<(const Worst_cell_entry& other) const // std::priority_queue keeps the largest on top
+  {
+    return score != other.score ? score > other.score : order > other.order;
+  }
+};
+
+} // namespace internal
+
+/// Improves the worst tetrahedra of `tr` under `criterion` (any
+/// `Worst_tetrahedron_criterion`: MinMax or MaxMin dihedral angle, an aspect
+/// ratio) by hill climbing, worst first: edge removal (`remove_edge`) on each
+/// edge of the worst cell, then the flip of each of its facets, the first
+/// that improves the worst tetrahedron where it acts. Every change improves
+/// that worst value beyond the criterion's relative tolerance, so the worst
+/// value over the mesh never gets worse and the run ends.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{operations} `FLIPS`, `EDGE_REMOVAL` or both (default `ALL_OPERATIONS`) \cgalParamNEnd
+///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
+///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} the most operations made, default 10 times the number of cells \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef internal::Worst_cell_entry<Tr> Entry;
+  CGAL_precondition(tr.dimension() == 3);
+  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(ALL_OPERATIONS));
+  const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  const std::size_t limit = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                             10 * tr.number_of_finite_cells());
+  CGAL::Real_timer timer;
+  timer.start();
+
+  auto score = [&](Cell_handle c) {
+    const double v = criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                       c->vertex(3)->point());
+    return larger_is_worse ? -v : v;
+  };
+  auto worst = [&]() {
+    double w = HUGE_VAL;
+    for(Cell_handle c : tr.finite_cell_handles()) w = (std::min)(w, score(c));
+    return larger_is_worse ? -w : w;
+  };
+  std::priority_queue<Entry> heap;
+  std::size_t pushed = 0;
+  auto push = [&](Cell_handle c) {
+    if(tr.is_infinite(c)) return;
+    heap.push(Entry{score(c), pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+  };
+  // The cells whose operations may have changed: those sharing an edge with
+  // a new cell (the ring of that edge changed), each pushed once.
+  std::vector<Cell_handle> around;
+  auto push_around = [&](const std::vector<Cell_handle>& created) {
+    around.clear();
+    for(Cell_handle c : created)
+    {
+      if(tr.is_infinite(c)) continue;
+      for(int i = 0; i < 4; ++i)
+        for(int j = i + 1; j < 4; ++j)
+        {
+          auto circ = tr.incident_cells(c, i, j), done = circ;
+          do
+          {
+            if(std::find(around.begin(), around.end(), Cell_handle(circ)) == around.end()) around.push_back(circ);
+          } while(++circ != done);
+        }
+    }
+    for(Cell_handle c : around) push(c);
+  };
+
+  Quality_report report;
+  report.worst_before = worst();
+  for(Cell_handle c : tr.finite_cell_handles()) push(c);
+  std::vector<Cell_handle> created;
+  while(!heap.empty())
+  {
+    if(report.number_of_operations() >= limit)
+    {
+      report.ending = CYCLE_LIMIT_REACHED;
+      break;
+    }
+    const Entry entry = heap.top();
+    heap.pop();
+    Cell_handle c;
+    if(!tr.is_cell(entry.vertices[0], entry.vertices[1], entry.vertices[2], entry.vertices[3], c)) continue;
+    ++report.visits;
+    created.clear();
+    bool improved = false;
+    if(operations & EDGE_REMOVAL)
+      for(int i = 0; i < 4 && !improved; ++i)
+        for(int j = i + 1; j < 4 && !improved; ++j)
+          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, maximum_ring, created).removed())
+          {
+            ++report.edge_removals;
+            improved = true;
+          }
+    if(operations & FLIPS)
+      for(int i = 0; i < 4 && !improved; ++i)
+      {
+        const auto conf = classify_facet(tr, c, i);
+        if(!conf.is_swappable() || !flip_respects_constraints(tr, conf.flip_plan(), constraints) || !criterion(tr, conf))
+          continue;
+        std::array<Cell_handle, 4> cells;
+        const int n = flip(tr, conf, cells, constraints);
+        created.assign(cells.begin(), cells.begin() + n);
+        ++report.flips[conf.flip_kind()];
+        improved = true;
+      }
+    if(improved) push_around(created);
+    else ++report.stuck;
+  }
+  report.worst_after = worst();
+  report.seconds = timer.time();
+  return report;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
