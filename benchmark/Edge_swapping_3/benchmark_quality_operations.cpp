@@ -5,7 +5,8 @@
 // no vertex on the fixed hull). Rows: the input, the flip driver
 // (`swap_edges`, MinMax), and the worst-first driver
 // (`improve_worst_tetrahedra`) with flips, edge removal, or both, for MinMax
-// and MaxMin dihedral angles. Columns as in issue 11's table: smallest and
+// and MaxMin dihedral angles, then with both for the radius ratio, the
+// dihedral sine and the volume-length ratio. Columns as in issue 11's table: smallest and
 // largest dihedral angle, cells below 10 and above 165 and 175 degrees, the
 // 1st percentile of the radius ratio 3 r / R (1 for a regular tetrahedron),
 // then the time and the operations.
@@ -112,6 +113,16 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
       const std::string row = std::string("worst first ") + (minmax ? "MinMax, " : "MaxMin, ") + name;
       print(row.c_str(), quality(tr, counted(tr)), r.seconds, operations_of(r));
     }
+  // The other measures, with both operations.
+  auto other = [&](const auto& criterion, const char* row) {
+    Triangulation tr;
+    make(tr);
+    const auto r = ES::improve_worst_tetrahedra(tr, criterion, ES::parameters::mesh_constraints(constraints));
+    print(row, quality(tr, counted(tr)), r.seconds, operations_of(r));
+  };
+  other(ES::Max_min_radius_ratio_criterion(), "worst first radius ratio, both");
+  other(ES::Max_min_dihedral_sine_criterion(), "worst first dihedral sine, both");
+  other(ES::Max_min_volume_length_criterion(), "worst first volume-length, both");
 }
 
 } // namespace

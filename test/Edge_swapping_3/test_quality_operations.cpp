@@ -526,3 +526,77 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
   WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.number_of_operations() - r.edge_removals
                        << " flips; worst smallest angle " << r.worst_before << " -> " << r.worst_after);
 }
+
+TEST_CASE("Quality measures - 1 for the regular tetrahedron - 0 when flat - the sliver that the edge ratio misses",
+          "[quality measures]")
+{
+  const Point a(1, 1, 1), b(1, -1, -1), c(-1, 1, -1), d(-1, -1, 1);
+  const double regular_angle = std::acos(1.0 / 3) * 180 / 3.14159265358979323846;
+  REQUIRE(std::abs(smallest_angle(a, b, c, d) - regular_angle) < 1e-9);
+  for(const double value : {ES::Normalized_radius_ratio()(a, b, c, d), ES::Minimum_dihedral_sine()(a, b, c, d),
+                            ES::Volume_length_ratio()(a, b, c, d)})
+    REQUIRE(std::abs(value - 1) < 1e-12);
+  // Flat: four points in a plane.
+  const Point e(0, 0, 0), f(1, 0, 0), g(0, 1, 0), h(1, 1, 0);
+  REQUIRE(ES::Normalized_radius_ratio()(e, f, g, h) < 1e-300);
+  REQUIRE(ES::Minimum_dihedral_sine()(e, f, g, h) == 0);
+  REQUIRE(ES::Volume_length_ratio()(e, f, g, h) == 0);
+  // A sliver: a square's corners lifted a little, alternately. Its edges are
+  // all alike (ratio sqrt 2), its volume nearly nothing.
+  const Point s0(0, 0, 0), s1(1, 0, 1e-3), s2(1, 1, 0), s3(0, 1, 1e-3);
+  REQUIRE(ES::edge_length_ratio(s0, s1, s2, s3) < 1.5);
+  REQUIRE(ES::Normalized_radius_ratio()(s0, s1, s2, s3) < 1e-2);
+  REQUIRE(ES::Minimum_dihedral_sine()(s0, s1, s2, s3) < 1e-2);
+  REQUIRE(ES::Volume_length_ratio()(s0, s1, s2, s3) < 1e-2);
+  // Invariant under scaling and translation; the sine agrees with the angles.
+  const unsigned seed = 41;
+  INFO("seed " << seed);
+  const auto p = random_in_cube(400, seed);
+  for(std::size_t k = 0; k + 3 < p.size(); k += 4)
+  {
+    auto moved = [&](const Point& q) { return Point(1e6 * q.x() - 3e5, 1e6 * q.y() + 7, 1e6 * q.z()); };
+    const Point q0 = moved(p[k]), q1 = moved(p[k + 1]), q2 = moved(p[k + 2]), q3 = moved(p[k + 3]);
+    for(const auto& [before, after] :
+        {std::make_pair(ES::Normalized_radius_ratio()(p[k], p[k + 1], p[k + 2], p[k + 3]), ES::Normalized_radius_ratio()(q0, q1, q2, q3)),
+         std::make_pair(ES::Minimum_dihedral_sine()(p[k], p[k + 1], p[k + 2], p[k + 3]), ES::Minimum_dihedral_sine()(q0, q1, q2, q3)),
+         std::make_pair(ES::Volume_length_ratio()(p[k], p[k + 1], p[k + 2], p[k + 3]), ES::Volume_length_ratio()(q0, q1, q2, q3))})
+      REQUIRE(std::abs(before - after) <= 1e-9 * std::max(1.0, before));
+    const auto angles = ES::dihedral_angles(p[k], p[k + 1], p[k + 2], p[k + 3]);
+    double sine = 1;
+    for(double angle : angles) sine = std::min(sine, std::sin(angle * 3.14159265358979323846 / 180));
+    REQUIRE(std::abs(ES::Minimum_dihedral_sine()(p[k], p[k + 1], p[k + 2], p[k + 3]) - sine / (2 * std::sqrt(2.0) / 3)) < 1e-9);
+  }
+}
+
+TEST_CASE("The quality driver with each measure - never worse - converged - valid", "[quality measures]")
+{
+  const unsigned seed = 9;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(400, seed);
+  auto run = [&](const auto& criterion, const char* name) {
+    Tr tr;
+    ES::insert_delaunay(tr, points);
+    const auto volume = exact_volume(tr);
+    auto worst = [&]() {
+      double w = HUGE_VAL;
+      for(auto c : tr.finite_cell_handles())
+        w = std::min(w, criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                          c->vertex(3)->point()));
+      return w;
+    };
+    const double before = worst();
+    const auto r = ES::improve_worst_tetrahedra(tr, criterion);
+    INFO(name);
+    REQUIRE(r.ending == ES::CONVERGED);
+    REQUIRE(r.number_of_operations() > 0);
+    REQUIRE(r.worst_before == before);
+    REQUIRE(r.worst_after == worst());
+    REQUIRE(r.worst_after >= before);
+    REQUIRE(tr.is_valid());
+    REQUIRE(exact_volume(tr) == volume);
+    REQUIRE(ES::improve_worst_tetrahedra(tr, criterion).number_of_operations() == 0);
+  };
+  run(ES::Max_min_radius_ratio_criterion(), "radius ratio");
+  run(ES::Max_min_dihedral_sine_criterion(), "dihedral sine");
+  run(ES::Max_min_volume_length_criterion(), "volume-length");
+}

@@ -100,6 +100,47 @@ struct Aspect_ratio
   }
 };
 
+/// 3 r / R, the inradius over the circumradius normalized: 1 for a regular
+/// tetrahedron, 0 for a flat one (larger is better). A sliver, flat with
+/// well-shaped faces, scores near 0, which the edge length ratio misses.
+struct Normalized_radius_ratio
+{
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    return 3 / radius_ratio(a, b, c, d);
+  }
+};
+
+/// The smallest dihedral sine, normalized (`minimum_dihedral_sine`; larger is better).
+struct Minimum_dihedral_sine
+{
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    return minimum_dihedral_sine(a, b, c, d);
+  }
+};
+
+/// The volume-length ratio (`volume_length_ratio`; larger is better).
+struct Volume_length_ratio
+{
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    return volume_length_ratio(a, b, c, d);
+  }
+};
+
+/// Model of `SwapCriterion_3`: maximize the smallest normalized radius ratio 3 r / R.
+typedef Worst_tetrahedron_criterion<Normalized_radius_ratio, false> Max_min_radius_ratio_criterion;
+
+/// Model of `SwapCriterion_3`: maximize the smallest dihedral sine (both small and large angles are poor).
+typedef Worst_tetrahedron_criterion<Minimum_dihedral_sine, false> Max_min_dihedral_sine_criterion;
+
+/// Model of `SwapCriterion_3`: maximize the smallest volume-length ratio.
+typedef Worst_tetrahedron_criterion<Volume_length_ratio, false> Max_min_volume_length_criterion;
+
 /// Model of `SwapCriterion_3`: minimize the largest dihedral angle (MinMax).
 typedef Worst_tetrahedron_criterion<Largest_dihedral_angle, true> Min_max_dihedral_angle_criterion;
 

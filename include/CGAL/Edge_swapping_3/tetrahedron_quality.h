@@ -1,5 +1,5 @@
-// Quality measures of a tetrahedron: dihedral angles and the paper's two
-// aspect ratios. Constructions in double precision: approximate by nature.
+// Quality measures of a tetrahedron: dihedral angles, the paper's two
+// aspect ratios, the smallest dihedral sine and the volume-length ratio. Constructions in double precision: approximate by nature.
 // Every measure is scale invariant, so it is computed on the edge vectors
 // scaled to at most 1 (no overflow or underflow whatever the coordinates),
 // and it is always a finite number: a tetrahedron too flat for double
@@ -121,6 +121,46 @@ double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Poi
     area2 += norm(cross(sub(v[(k + 2) & 3], v[(k + 1) & 3]), sub(v[(k + 3) & 3], v[(k + 1) & 3])));
   const double inradius = six_volume / area2; // 3V / A
   return finite_ratio(circumradius / inradius);
+}
+
+/// The smallest sine of the six dihedral angles, divided by that of a
+/// regular tetrahedron (2 sqrt(2) / 3): 1 for a regular tetrahedron, 0 for a
+/// flat one. Small for both small and large angles, with no `acos`: the sine
+/// of the angle at edge ij is |n_k x n_l| / (|n_k| |n_l|), n_k and n_l the
+/// normals of the two faces on that edge.
+template <class Point>
+double minimum_dihedral_sine(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  using namespace internal;
+  const auto v = to_vecs(p0, p1, p2, p3);
+  std::array<Vec, 4> n;
+  for(int k = 0; k < 4; ++k)
+    n[k] = cross(sub(v[(k + 2) & 3], v[(k + 1) & 3]), sub(v[(k + 3) & 3], v[(k + 1) & 3]));
+  double smallest = HUGE_VAL;
+  for(int k = 0; k < 4; ++k)
+    for(int l = k + 1; l < 4; ++l)
+    {
+      const double length = norm(n[k]) * norm(n[l]);
+      const double s = length > 0 ? norm(cross(n[k], n[l])) / length : 0.0;
+      smallest = (std::min)(smallest, std::isfinite(s) ? s : 0.0);
+    }
+  return smallest / (2 * std::sqrt(2.0) / 3);
+}
+
+/// The volume over the cube of the root mean square edge length, times
+/// 6 sqrt(2): 1 for a regular tetrahedron, 0 for a flat one.
+template <class Point>
+double volume_length_ratio(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  using namespace internal;
+  const auto v = to_vecs(p0, p1, p2, p3);
+  const double volume = std::abs(dot(v[1], cross(v[2], v[3]))) / 6;
+  double squares = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j) squares += dot(sub(v[i], v[j]), sub(v[i], v[j]));
+  const double rms = std::sqrt(squares / 6);
+  const double r = rms > 0 ? 6 * std::sqrt(2.0) * volume / (rms * rms * rms) : 0.0;
+  return std::isfinite(r) ? r : 0.0;
 }
 
 } // namespace Edge_swapping_3
