@@ -204,7 +204,11 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --order backwards", "optimize " + in + out + " --perturb maybe",
        "optimize " + in + " -o " + w.path("out.obj"), "optimize " + in + out + " --max-cycles -3",
        "optimize " + w.path("missing.node") + out, "optimize " + w.path("cube.txt") + out, "frobnicate",
-       "check " + w.path("missing.ele"), "check " + in})
+       "check " + w.path("missing.ele"), "check " + in,
+       "optimize " + in + out + " --operations flips", "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing",
+       "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
+       "optimize " + in + out + " --criterion min-edges --operations edge-removal",
+       "optimize " + in + out + " --criterion radius-ratio --operations flips --history " + w.path("h.csv")})
   {
     INFO("edge_swap " << args);
     const Run r = w.run(args);
@@ -291,6 +295,32 @@ TEST_CASE("The program gives the same output with and without huge pages", "[pro
   const Run bad = w.run_with("unset GLIBC_TUNABLES;", "check " + w.path("missing.ele"));
   REQUIRE(bad.exit_code == 2);
   REQUIRE(bad.err.find("missing.node") != std::string::npos);
+}
+
+TEST_CASE("optimize --operations runs the worst-first driver and writes a valid mesh", "[program]")
+{
+  Workdir w;
+  std::vector<std::array<double, 3>> points;
+  for(const Point& p : random_in_cube(300, 13)) points.push_back({p.x(), p.y(), p.z()});
+  {
+    std::ofstream node(w.path("cube.node"));
+    CGAL::Edge_swapping_3::IO::write_node_file(node, points, {}, 0);
+  }
+  for(const std::string criterion : {"minmax-dihedral", "radius-ratio"})
+  {
+    INFO(criterion);
+    const Run r = w.run("optimize " + w.path("cube.node") + " --start delaunay --criterion " + criterion +
+                        " --operations flips,edge-removal -o " + w.path("out.ele") + " --stats " + w.path("s.json"));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.out.find("worst first (flips,edge-removal): converged") != std::string::npos);
+    const std::string stats = Workdir::slurp(w.path("s.json"));
+    REQUIRE(stats.find("\"edge_removals\"") != std::string::npos);
+    REQUIRE(stats.find("\"driver\": \"worst first\"") != std::string::npos);
+    const Run c = w.run("check " + w.path("out.ele"));
+    REQUIRE(c.exit_code == 0);
+    REQUIRE(c.out.find("valid triangulation") != std::string::npos);
+  }
 }
 
 TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[program]")

@@ -24,7 +24,10 @@ int main(int argc, char** argv)
   auto* optimize = app.add_subcommand("optimize", "swap edges of a point set's start triangulation or of a mesh");
   optimize->add_option("INPUT", opt.input, "TetGen .node (points) or .ele (mesh, .node beside it)")->required();
   optimize->add_option("-o,--output", opt.output, "output Y.ele (Y.node is written beside it)")->required();
-  optimize->add_option("--criterion", opt.criterion, "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio");
+  optimize->add_option("--criterion", opt.criterion,
+                       "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio|radius-ratio|dihedral-sine|volume-length");
+  optimize->add_option("--operations", opt.operations,
+                       "flips,edge-removal: the worst-first driver with these operations (quality criteria)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");
   optimize->add_option("--order", opt.order, "face order: storage or random (default: storage; random with --helper)");

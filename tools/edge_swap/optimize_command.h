@@ -9,6 +9,8 @@
 #include <CGAL/Edge_swapping_3/mesh_statistics.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <nlohmann/json.hpp>
+#include <algorithm>
+#include <type_traits>
 
 namespace edge_swap {
 
@@ -16,6 +18,7 @@ struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order;
   std::string perturb = "cgal", history, stats, schedule = "queue";
+  std::string operations; ///< empty: the flip driver; else the worst-first driver with these
   bool helper = false, start_given = false, paper = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
@@ -55,7 +58,68 @@ auto with_criterion(const std::string& name, ES::Perturbation perturbation, Run 
   if(name == "maxmin-dihedral") return run(ES::Max_min_dihedral_angle_criterion());
   if(name == "min-edges") return run(ES::Min_edges_criterion());
   if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion());
+  if(name == "radius-ratio") return run(ES::Max_min_radius_ratio_criterion());
+  if(name == "dihedral-sine") return run(ES::Max_min_dihedral_sine_criterion());
+  if(name == "volume-length") return run(ES::Max_min_volume_length_criterion());
   throw Usage_error("unknown --criterion '" + name + "'");
+}
+
+/// The bits of `--operations` (a comma-separated list).
+inline unsigned quality_operations(const std::string& list)
+{
+  unsigned bits = 0;
+  std::size_t begin = 0;
+  while(begin <= list.size())
+  {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    const std::string name = list.substr(begin, end - begin);
+    if(name == "flips") bits |= ES::FLIPS;
+    else if(name == "edge-removal") bits |= ES::EDGE_REMOVAL;
+    else throw Usage_error("--operations: unknown operation '" + name + "' (flips, edge-removal)");
+    begin = end + 1;
+  }
+  return bits;
+}
+
+/// The worst-first driver (`--operations`) on `tr`: runs, writes, reports.
+inline int run_worst_first(const Optimize_options& o, const Input& in, Triangulation& tr, unsigned operations)
+{
+  const std::size_t cells_before = tr.number_of_finite_cells();
+  namespace np = ES::parameters;
+  const ES::Quality_report report = with_constraints(in, [&](const auto& constraints) {
+    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
+      if constexpr(std::is_same<std::decay_t<decltype(criterion)>, ES::Delaunay_criterion>::value ||
+                   std::is_same<std::decay_t<decltype(criterion)>, ES::Min_edges_criterion>::value)
+        return ES::Quality_report(); // refused before any work
+      else
+        return ES::improve_worst_tetrahedra(tr, criterion, np::operations(operations, np::mesh_constraints(constraints)));
+    });
+  });
+  Output_files files;
+  add_mesh_files(files, o.output, tr, in);
+  if(!o.stats.empty())
+    files.add(o.stats, [&](std::ostream& out) {
+      nlohmann::json j = {{"strategy", o.criterion},
+                          {"driver", "worst first"},
+                          {"operations", o.operations},
+                          {"ending", ES::swap_ending_name(report.ending)},
+                          {"edge_removals", report.edge_removals},
+                          {"flips", {{"2-3", report.flips[0]}, {"3-2", report.flips[1]}, {"2-2", report.flips[2]},
+                                     {"4-4", report.flips[3]}}},
+                          {"visits", report.visits},
+                          {"stuck", report.stuck},
+                          {"worst_before", report.worst_before},
+                          {"worst_after", report.worst_after},
+                          {"seconds", report.seconds}};
+      out << j.dump(2) << '\n';
+    });
+  files.commit();
+  const auto& f = report.flips;
+  std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
+            << "; edge removals " << report.edge_removals << ", flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
+            << f[2] << ", 4-4 " << f[3] << "; worst " << report.worst_before << " -> " << report.worst_after
+            << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
+  return 0;
 }
 
 inline int run_optimize(const Optimize_options& o)
@@ -73,6 +137,15 @@ inline int run_optimize(const Optimize_options& o)
   if(o.paper && o.criterion != "delaunay")
     throw Usage_error("--paper turns off the Delaunay repair; it cannot go with --criterion " + o.criterion);
   if(o.start.rfind("scramble:", 0) == 0) whole_number(o.start.substr(9), "--start scramble:K");
+  const unsigned operations = o.operations.empty() ? 0u : quality_operations(o.operations);
+  if(operations != 0)
+  {
+    if(o.criterion == "delaunay" || o.criterion == "min-edges")
+      throw Usage_error("--operations drives a quality criterion (minmax-dihedral, maxmin-dihedral, aspect-ratio, "
+                        "radius-ratio, dihedral-sine, volume-length), not --criterion " + o.criterion);
+    if(!o.history.empty()) throw Usage_error("--history records rounds, which --operations (worst first) has not");
+    with_criterion(o.criterion, ES::CGAL_PERTURBATION, [](const auto&) { return 0; }); // an unknown name fails here
+  }
 
   Input in = read_input(o.input);
   Triangulation tr;
@@ -88,6 +161,8 @@ inline int run_optimize(const Optimize_options& o)
     build_start(tr, in, o.start, o.seed);
     mark_point_set_domain(tr);
   }
+
+  if(operations != 0) return run_worst_first(o, in, tr, operations);
 
   // The full statistics (every dihedral angle) only when --stats asks for them.
   const bool with_statistics = !o.stats.empty();

@@ -41,7 +41,7 @@ struct Quality_report
   std::size_t stuck = 0;                        ///< of those, the cells no operation improved
   std::size_t edge_removals = 0;                ///< edges removed
   std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
-  double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells
+  double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells in the domain
   double seconds = 0;
 
   std::size_t number_of_operations() const
@@ -105,15 +105,19 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
                                        c->vertex(3)->point());
     return larger_is_worse ? -v : v;
   };
+  // Cells outside the domain (subdomain 0 of a domain mesh) are neither
+  // measured nor taken; the operations never join them to the domain.
+  auto counted = [&](Cell_handle c) { return !tr.is_infinite(c) && constraints.is_in_domain(tr, c); };
   auto worst = [&]() {
     double w = HUGE_VAL;
-    for(Cell_handle c : tr.finite_cell_handles()) w = (std::min)(w, score(c));
+    for(Cell_handle c : tr.finite_cell_handles())
+      if(counted(c)) w = (std::min)(w, score(c));
     return larger_is_worse ? -w : w;
   };
   std::priority_queue<Entry> heap;
   std::size_t pushed = 0;
   auto push = [&](Cell_handle c) {
-    if(tr.is_infinite(c)) return;
+    if(!counted(c)) return;
     heap.push(Entry{score(c), pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   };
   // The cells whose operations may have changed: those sharing an edge with
