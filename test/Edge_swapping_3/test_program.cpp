@@ -265,17 +265,23 @@ TEST_CASE("optimize writes a mesh that reads back exactly - and check agrees", "
   REQUIRE(r.exit_code == 2);
 }
 
+namespace {
+/// Writes `n` random points of the unit cube (seed `seed`) as the .node file `name`.
+void write_random_node(const Workdir& w, const std::string& name, std::size_t n, unsigned seed)
+{
+  std::vector<std::array<double, 3>> points;
+  for(const Point& p : random_in_cube(n, seed)) points.push_back({p.x(), p.y(), p.z()});
+  std::ofstream node(w.path(name));
+  CGAL::Edge_swapping_3::IO::write_node_file(node, points, {}, 0);
+}
+} // namespace
+
 TEST_CASE("The program gives the same output with and without huge pages", "[program]")
 {
   // edge_swap starts itself again with glibc.malloc.hugetlb=1 added to
   // GLIBC_TUNABLES, unless the variable names that tunable already.
   Workdir w;
-  std::vector<std::array<double, 3>> points;
-  for(const Point& p : random_in_cube(400, 5)) points.push_back({p.x(), p.y(), p.z()});
-  {
-    std::ofstream node(w.path("cube.node"));
-    CGAL::Edge_swapping_3::IO::write_node_file(node, points, {}, 0);
-  }
+  write_random_node(w, "cube.node", 400, 5);
   const std::string args = "optimize " + w.path("cube.node") + " --criterion minmax-dihedral -o ";
   const std::vector<std::pair<std::string, std::string>> runs = {
       {"unset GLIBC_TUNABLES;", "unset.ele"},
@@ -300,12 +306,7 @@ TEST_CASE("The program gives the same output with and without huge pages", "[pro
 TEST_CASE("optimize --operations runs the worst-first driver and writes a valid mesh", "[program]")
 {
   Workdir w;
-  std::vector<std::array<double, 3>> points;
-  for(const Point& p : random_in_cube(300, 13)) points.push_back({p.x(), p.y(), p.z()});
-  {
-    std::ofstream node(w.path("cube.node"));
-    CGAL::Edge_swapping_3::IO::write_node_file(node, points, {}, 0);
-  }
+  write_random_node(w, "cube.node", 300, 13);
   for(const std::string criterion : {"minmax-dihedral", "radius-ratio"})
   {
     INFO(criterion);
