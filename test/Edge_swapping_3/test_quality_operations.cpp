@@ -1,13 +1,15 @@
 // The quality operations. Edge removal: hand-built rings of 3 to 7
 // tetrahedra with exact coordinates, Klincsek's dynamic program against every
 // triangulation of the ring, constraints, the hull, and random sequences of
-// removals on a Delaunay mesh. The quality driver (worst first): validity,
+// removals on a Delaunay mesh. Multi-face removal: hand-built sandwiches of 1
+// to 6 triangles, constraints, random sequences. The quality driver (worst first): validity,
 // exact volume, the worst value, its ending, determinism, domain meshes.
 
 #include "test_common.h"
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
+#include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <cmath>
 #include <functional>
@@ -128,6 +130,40 @@ std::size_t poor_cells(const T& tr, bool largest)
     if(largest ? ES::Largest_dihedral_angle()(p0, p1, p2, p3) > 165 : smallest_angle(p0, p1, p2, p3) < 10) ++n;
   }
   return n;
+}
+
+/// A sandwich: the fan triangulation from s_0 of the convex polygon `ring`
+/// (in the plane z = 0), each triangle joined to u = (0, 0, h) and to
+/// w = (0, 0, -h). Point 0 is u, 1 is w, 2 + k is s_k; `references` (when
+/// given) constrains the fan triangle k with reference k + 1 where nonzero.
+template <class T>
+std::vector<typename T::Vertex_handle> build_sandwich(T& tr, double h, const std::vector<Point>& ring)
+{
+  std::vector<Point> points = {Point(0, 0, h), Point(0, 0, -h)};
+  points.insert(points.end(), ring.begin(), ring.end());
+  std::vector<std::array<std::size_t, 4>> cells;
+  for(std::size_t k = 1; k + 1 < ring.size(); ++k)
+    for(std::size_t apex : {0, 1})
+    {
+      std::array<std::size_t, 4> t = {apex, 2, 2 + k, 2 + k + 1};
+      if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+        std::swap(t[2], t[3]);
+      cells.push_back(t);
+    }
+  std::vector<typename T::Vertex_handle> vertices;
+  const std::string problem = ES::build_triangulation_from_cells(tr, points, cells, vertices);
+  INFO(problem);
+  REQUIRE(problem.empty());
+  return vertices;
+}
+
+/// The facet (s_0, s_k, s_{k+1}) of a sandwich, seen from its cell with u.
+template <class T>
+typename T::Facet fan_facet(const T& tr, const std::vector<typename T::Vertex_handle>& v, std::size_t k)
+{
+  typename T::Cell_handle c;
+  REQUIRE(tr.is_cell(v[0], v[2], v[2 + k], v[2 + k + 1], c));
+  return typename T::Facet(c, c->index(v[0]));
 }
 
 /// Every triangulation of the polygon s_i ... s_j: the best worst score, or
@@ -413,13 +449,201 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
   }
 }
 
+TEST_CASE("Multi-face removal replaces the 2m tetrahedra of a sandwich by the m + 2 around the new edge",
+          "[multi-face removal]")
+{
+  // A regular polygon of m + 2 points, u and w at height 0.3 above and below
+  // its centre: the sandwich's tetrahedra are flat, and removing the m fan
+  // triangles gives the star of edge uw, which is better (MinMax).
+  for(int m = 1; m <= 6; ++m)
+    for(std::size_t root = 1; root <= std::size_t(m); ++root)
+    {
+      CAPTURE(m, root);
+      Tr tr;
+      const auto v = build_sandwich(tr, 0.3, regular_ring(m + 2));
+      const auto volume = exact_volume(tr);
+      REQUIRE(tr.number_of_finite_cells() == std::size_t(2 * m));
+      const auto r = ES::remove_faces(tr, fan_facet(tr, v, root), ES::Min_max_dihedral_angle_criterion());
+      INFO(ES::multi_face_removal_outcome_name(r.outcome) << " " << r.quality_before << " -> " << r.quality_after);
+      REQUIRE(r.outcome == ES::FACES_REMOVED);
+      REQUIRE(r.faces == m);
+      REQUIRE(r.new_cells == m + 2);
+      REQUIRE(r.quality_after < r.quality_before);
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(rebuilds_as_convex_mesh(tr));
+      REQUIRE(exact_volume(tr) == volume);
+      REQUIRE(r.quality_after == worst_largest_angle(tr));
+      // The result is the star of uw: edge removal's input.
+      Tr star;
+      build_star(star, 0.3, regular_ring(m + 2));
+      REQUIRE(cell_set(tr) == cell_set(star));
+    }
+  // MaxMin on a flatter sandwich of 6 triangles: the best disk stops short of
+  // the thin fan triangles at the ends (its new tetrahedra on the diagonals
+  // are better than those on the polygon's sides there).
+  Tr tr;
+  const auto v = build_sandwich(tr, 0.1, regular_ring(8));
+  const auto volume = exact_volume(tr);
+  const double worst = worst_smallest_angle(tr);
+  const auto r = ES::remove_faces(tr, fan_facet(tr, v, 3), ES::Max_min_dihedral_angle_criterion());
+  INFO(ES::multi_face_removal_outcome_name(r.outcome) << " " << r.quality_before << " -> " << r.quality_after);
+  REQUIRE(r.removed());
+  REQUIRE(r.faces > 1);
+  REQUIRE(r.faces < 6);
+  REQUIRE(r.new_cells == r.faces + 2);
+  REQUIRE(tr.number_of_finite_cells() == std::size_t(12 - 2 * r.faces + r.faces + 2));
+  REQUIRE(tr.is_valid());
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(r.quality_after > r.quality_before);
+  REQUIRE(worst_smallest_angle(tr) >= worst);
+}
+
+TEST_CASE("Multi-face removal stops at constrained facets and subdomains - needs the pierced triangle",
+          "[multi-face removal]")
+{
+  // A regular pentagon, fan from s_0: triangles 1 = (s0 s1 s2), 2 = (s0 s2 s3)
+  // (it holds the centre, where uw crosses), 3 = (s0 s3 s4).
+  auto constrain = [](Domain_tr& tr, const std::vector<Domain_tr::Vertex_handle>& v, std::size_t k, int reference) {
+    const auto f = fan_facet(tr, v, k);
+    const auto n = f.first->neighbor(f.second);
+    f.first->info().facet_reference[f.second] = reference;
+    n->info().facet_reference[n->index(f.first)] = reference;
+  };
+  auto make = [](Domain_tr& tr) {
+    const auto v = build_sandwich(tr, 0.3, regular_ring(5));
+    for(auto c : tr.all_cell_handles()) c->info().subdomain = tr.is_infinite(c) ? 0 : 1;
+    return v;
+  };
+  const auto np = ES::parameters::mesh_constraints(ES::Domain_constraints());
+  SECTION("triangle 3 constrained: the disk of triangles 1 and 2 goes, triangle 3 stays")
+  {
+    Domain_tr tr;
+    const auto v = make(tr);
+    constrain(tr, v, 3, 9);
+    const auto volume = exact_volume(tr);
+    const auto r = ES::remove_faces(tr, fan_facet(tr, v, 2), ES::Min_max_dihedral_angle_criterion(), np);
+    INFO(ES::multi_face_removal_outcome_name(r.outcome));
+    REQUIRE(r.outcome == ES::FACES_REMOVED);
+    REQUIRE(r.faces == 2);
+    REQUIRE(r.new_cells == 4);
+    REQUIRE(tr.is_valid());
+    REQUIRE(exact_volume(tr) == volume);
+    const auto f = fan_facet(tr, v, 3); // still there, with its reference on both sides
+    REQUIRE(f.first->info().facet_reference[f.second] == 9);
+    REQUIRE(f.first->neighbor(f.second)->info().facet_reference[f.first->neighbor(f.second)->index(f.first)] == 9);
+    // From the constrained facet itself: nothing.
+    const auto again = ES::remove_faces(tr, f, ES::Min_max_dihedral_angle_criterion(), np);
+    REQUIRE(again.outcome == ES::FACET_CONSTRAINED);
+  }
+  SECTION("triangle 2 constrained: a disk without the pierced triangle is not valid")
+  {
+    Domain_tr tr;
+    const auto v = make(tr);
+    constrain(tr, v, 2, 4);
+    const auto before = cell_set(tr);
+    const auto r = ES::remove_faces(tr, fan_facet(tr, v, 1), ES::Min_max_dihedral_angle_criterion(), np);
+    INFO(ES::multi_face_removal_outcome_name(r.outcome));
+    REQUIRE(r.outcome == ES::NO_VALID_REMOVAL);
+    REQUIRE(cell_set(tr) == before);
+  }
+  SECTION("triangle 3 in another subdomain: it stays, and so does its subdomain")
+  {
+    Domain_tr tr;
+    const auto v = make(tr);
+    const auto f3 = fan_facet(tr, v, 3);
+    f3.first->info().subdomain = 2;
+    f3.first->neighbor(f3.second)->info().subdomain = 2;
+    const auto r = ES::remove_faces(tr, fan_facet(tr, v, 2), ES::Min_max_dihedral_angle_criterion(), np);
+    REQUIRE(r.outcome == ES::FACES_REMOVED);
+    REQUIRE(r.faces == 2);
+    std::size_t second = 0;
+    for(auto c : tr.finite_cell_handles()) second += c->info().subdomain == 2;
+    REQUIRE(second == 2);
+    REQUIRE(tr.is_valid());
+  }
+  SECTION("a hull facet is not interior")
+  {
+    Domain_tr tr;
+    const auto v = make(tr);
+    Domain_tr::Cell_handle c;
+    REQUIRE(tr.is_cell(v[0], v[2], v[3], v[4], c));
+    const int i = c->index(v[4]); // the facet (u, s0, s1) on the hull
+    REQUIRE(tr.is_infinite(c->neighbor(i)));
+    REQUIRE(ES::remove_faces(tr, Domain_tr::Facet(c, i), ES::Min_max_dihedral_angle_criterion(), np).outcome ==
+            ES::FACET_NOT_INTERIOR);
+  }
+}
+
+TEST_CASE("Random sequences of multi-face removals keep validity - exact volume - and never worsen the worst angle",
+          "[multi-face removal]")
+{
+  for(unsigned seed : {5u, 6u})
+  {
+    INFO("seed " << seed);
+    Tr tr;
+    ES::insert_delaunay(tr, random_in_cube(400, seed));
+    const auto volume = exact_volume(tr);
+    double worst = worst_largest_angle(tr);
+    std::size_t removals = 0, larger = 0, attempts = 0;
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      // The facets by their vertices' coordinates, then shuffled: the
+      // sequence depends on the seed only.
+      std::vector<std::array<Tr::Vertex_handle, 3>> facets;
+      for(auto f : tr.finite_facets())
+      {
+        std::array<Tr::Vertex_handle, 3> t = {f.first->vertex((f.second + 1) & 3), f.first->vertex((f.second + 2) & 3),
+                                              f.first->vertex((f.second + 3) & 3)};
+        auto less = [](Tr::Vertex_handle a, Tr::Vertex_handle b) { return CGAL::compare_xyz(a->point(), b->point()) == CGAL::SMALLER; };
+        std::sort(t.begin(), t.end(), less);
+        facets.push_back(t);
+      }
+      std::sort(facets.begin(), facets.end(), [](const auto& x, const auto& y) {
+        for(int k = 0; k < 3; ++k)
+        {
+          const auto c = CGAL::compare_xyz(x[k]->point(), y[k]->point());
+          if(c != CGAL::EQUAL) return c == CGAL::SMALLER;
+        }
+        return false;
+      });
+      std::shuffle(facets.begin(), facets.end(), std::mt19937(seed + unsigned(pass)));
+      for(const auto& t : facets)
+      {
+        Tr::Cell_handle c;
+        int i, j, k;
+        if(!tr.is_facet(t[0], t[1], t[2], c, i, j, k)) continue;
+        ++attempts;
+        const auto r = ES::remove_faces(tr, Tr::Facet(c, 6 - i - j - k), ES::Min_max_dihedral_angle_criterion());
+        if(!r.removed()) continue;
+        ++removals;
+        if(r.faces > 1) ++larger;
+        REQUIRE(r.new_cells == r.faces + 2);
+        REQUIRE(r.quality_after < r.quality_before);
+        const double now = worst_largest_angle(tr);
+        REQUIRE(now <= worst);
+        worst = now;
+      }
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(rebuilds_as_convex_mesh(tr));
+      REQUIRE(exact_volume(tr) == volume);
+    }
+    WARN("seed " << seed << ": " << removals << " multi-face removals (" << larger << " of more than one face) in "
+                 << attempts << " attempts; worst largest angle " << worst);
+    REQUIRE(larger > 0);
+  }
+}
+
 TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - and ends where no operation helps",
           "[quality driver]")
 {
   const unsigned seed = 8;
   INFO("seed " << seed);
   const auto points = random_in_cube(500, seed);
-  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::EDGE_REMOVAL), unsigned(ES::ALL_OPERATIONS)})
+  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::EDGE_REMOVAL), unsigned(ES::MULTI_FACE_REMOVAL),
+                             unsigned(ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL), unsigned(ES::ALL_OPERATIONS)})
     for(bool minmax : {false, true})
     {
       CAPTURE(operations, minmax);
@@ -432,9 +656,11 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
                             : ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np);
       REQUIRE(r.ending == ES::CONVERGED);
       REQUIRE(r.number_of_operations() > 0);
-      const bool removals = (operations & ES::EDGE_REMOVAL) != 0, flips = (operations & ES::FLIPS) != 0;
+      const bool removals = (operations & ES::EDGE_REMOVAL) != 0, flips = (operations & ES::FLIPS) != 0,
+                 face_removals = (operations & ES::MULTI_FACE_REMOVAL) != 0;
       REQUIRE((removals || r.edge_removals == 0));
-      REQUIRE((flips || r.number_of_operations() == r.edge_removals));
+      REQUIRE((face_removals || r.face_removals == 0));
+      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals));
       const double worst_now = minmax ? worst_largest_angle(tr) : worst_smallest_angle(tr);
       REQUIRE(r.worst_after == worst_now);
       // The worst cells of a random point set are slivers on the hull, which
@@ -448,8 +674,9 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       REQUIRE(exact_volume(tr) == volume);
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
-                         << " by " << r.edge_removals << " edge removals and "
-                         << r.number_of_operations() - r.edge_removals << " flips; " << r.visits << " visits, "
+                         << " by " << r.edge_removals << " edge removals, " << r.face_removals
+                         << " multi-face removals and " << r.number_of_operations() - r.edge_removals - r.face_removals
+                         << " flips; " << r.visits << " visits, "
                          << r.stuck << " stuck");
       // Converged: no cell has an operation that helps, so a second run changes nothing.
       const auto cells = cell_set(tr);

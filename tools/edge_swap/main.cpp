@@ -27,7 +27,8 @@ int main(int argc, char** argv)
   optimize->add_option("--criterion", opt.criterion,
                        "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio|radius-ratio|dihedral-sine|volume-length");
   optimize->add_option("--operations", opt.operations,
-                       "flips,edge-removal: the worst-first driver with these operations (quality criteria)");
+                       "flips, edge-removal, multi-face-removal (comma-separated) or all: the worst-first driver with these "
+                       "operations (quality criteria)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");
   optimize->add_option("--order", opt.order, "face order: storage or random (default: storage; random with --helper)");

@@ -75,7 +75,10 @@ inline unsigned quality_operations(const std::string& list)
     const std::string name = list.substr(begin, end - begin);
     if(name == "flips") bits |= ES::FLIPS;
     else if(name == "edge-removal") bits |= ES::EDGE_REMOVAL;
-    else throw Usage_error("--operations: unknown operation '" + name + "' (flips, edge-removal)");
+    else if(name == "multi-face-removal") bits |= ES::MULTI_FACE_REMOVAL;
+    else if(name == "all") bits |= ES::ALL_OPERATIONS;
+    else
+      throw Usage_error("--operations: unknown operation '" + name + "' (flips, edge-removal, multi-face-removal, all)");
     begin = end + 1;
   }
   return bits;
@@ -104,6 +107,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"operations", o.operations},
                           {"ending", ES::swap_ending_name(report.ending)},
                           {"edge_removals", report.edge_removals},
+                          {"multi_face_removals", report.face_removals},
+                          {"faces_removed", report.faces_removed},
                           {"flips", {{"2-3", report.flips[0]}, {"3-2", report.flips[1]}, {"2-2", report.flips[2]},
                                      {"4-4", report.flips[3]}}},
                           {"visits", report.visits},
@@ -116,7 +121,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   files.commit();
   const auto& f = report.flips;
   std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
-            << "; edge removals " << report.edge_removals << ", flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
+            << "; edge removals " << report.edge_removals << ", multi-face removals " << report.face_removals
+            << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
             << f[2] << ", 4-4 " << f[3] << "; worst " << report.worst_before << " -> " << report.worst_after
             << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
   return 0;

@@ -68,8 +68,7 @@ struct Largest_dihedral_angle
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
-    const auto angles = dihedral_angles(a, b, c, d);
-    return *std::max_element(angles.begin(), angles.end());
+    return largest_dihedral_angle(a, b, c, d);
   }
 };
 
@@ -78,8 +77,7 @@ struct Smallest_dihedral_angle
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
-    const auto angles = dihedral_angles(a, b, c, d);
-    return *std::min_element(angles.begin(), angles.end());
+    return smallest_dihedral_angle(a, b, c, d);
   }
 };
 

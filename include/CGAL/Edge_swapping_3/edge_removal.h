@@ -17,9 +17,13 @@
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/internal/facet_key.h>
+#include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -112,6 +116,20 @@ struct Edge_star
       }
   }
 
+  /// A hash of the ring's edges (s_k, s_{k+1}), which fix the cells around
+  /// the edge: equal for the same star, whatever cell the ring starts at.
+  std::uint64_t signature() const
+  {
+    std::uint64_t h = mix_bits(std::uint64_t(address_of(a)) ^ (std::uint64_t(address_of(b)) << 1));
+    for(std::size_t k = 0; k < ring.size(); ++k)
+    {
+      std::uint64_t u = address_of(ring[k]), v = address_of(ring[(k + 1) % ring.size()]);
+      if(v < u) std::swap(u, v);
+      h += mix_bits(u ^ mix_bits(v));
+    }
+    return h;
+  }
+
   /// +1 when `t` is an even permutation of the vertices of `c`, else -1.
   static int permutation_sign(Cell_handle c, const std::array<Vertex_handle, 4>& t)
   {
@@ -202,111 +220,20 @@ private:
   std::vector<Tuple> cells_;
 };
 
-/// Replaces the cells of `star` by `new_cells`, glued to the outside and to
-/// each other; the new cells take the cell data of the old ones and each keeps
-/// the facet data of the outer facet it takes over. Returns the new cells.
-template <class Tr, class Constraints>
-std::vector<typename Tr::Cell_handle> replace_edge_star(Tr& tr, const Edge_star<Tr>& star,
-                                                        const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells,
-                                                        const Constraints& constraints)
-{
-  typedef typename Tr::Cell_handle Cell_handle;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  auto& tds = tr.tds();
-  struct Slot
-  {
-    std::array<Vertex_handle, 3> v; // sorted by address: only to match facets
-    Cell_handle cell;
-    int index;
-    typename Constraints::Facet_data data;
-    bool glued = false;
-  };
-  auto slot_of = [](Cell_handle c, int i) {
-    Slot s;
-    s.v = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
-    std::sort(s.v.begin(), s.v.end(), [](Vertex_handle x, Vertex_handle y) { return &*x < &*y; });
-    s.cell = c;
-    s.index = i;
-    return s;
-  };
-  // The outer facets: each old cell's facets opposite a and opposite b.
-  std::vector<Slot> outside;
-  for(Cell_handle c : star.cells)
-    for(Vertex_handle apex : {star.a, star.b})
-    {
-      const int i = c->index(apex);
-      Slot o = slot_of(c, i);
-      o.cell = c->neighbor(i);
-      o.index = o.cell->index(c);
-      o.data = constraints.facet_data(c, i);
-      outside.push_back(o);
-    }
-  // Finite cells take the data of a finite old cell, infinite ones that of
-  // an infinite old cell (outside the domain).
-  Cell_handle finite_model = star.cells.front(), infinite_model = star.cells.front();
-  for(Cell_handle c : star.cells) (tr.is_infinite(c) ? infinite_model : finite_model) = c;
-  const auto finite_data = constraints.cell_data(finite_model), infinite_data = constraints.cell_data(infinite_model);
-  std::vector<Cell_handle> created;
-  for(const auto& t : new_cells)
-  {
-    created.push_back(tds.create_cell(t[0], t[1], t[2], t[3]));
-    constraints.set_cell_data(created.back(), tr.is_infinite(created.back()) ? infinite_data : finite_data);
-  }
-  std::vector<Slot> inner;
-  for(Cell_handle c : created)
-    for(int i = 0; i < 4; ++i)
-    {
-      const Slot f = slot_of(c, i);
-      bool glued = false;
-      for(Slot& o : outside)
-        if(!o.glued && o.v == f.v)
-        {
-          c->set_neighbor(i, o.cell);
-          o.cell->set_neighbor(o.index, c);
-          constraints.set_facet_data(c, i, o.data);
-          o.glued = glued = true;
-          break;
-        }
-      for(std::size_t m = 0; m < inner.size() && !glued; ++m)
-        if(!inner[m].glued && inner[m].v == f.v)
-        {
-          c->set_neighbor(i, inner[m].cell);
-          inner[m].cell->set_neighbor(inner[m].index, c);
-          constraints.set_facet_data(c, i, constraints.free_facet_data());
-          constraints.set_facet_data(inner[m].cell, inner[m].index, constraints.free_facet_data());
-          inner[m].glued = glued = true;
-        }
-      if(!glued) inner.push_back(f);
-    }
-  CGAL_assertion_code(for(const Slot& o : outside) CGAL_assertion(o.glued);)
-  CGAL_assertion_code(for(const Slot& f : inner) CGAL_assertion(f.glued);)
-  for(Cell_handle c : created)
-    for(int i = 0; i < 4; ++i) c->vertex(i)->set_cell(c);
-  for(Cell_handle c : star.cells) tds.delete_cell(c);
-  return created;
-}
 
-} // namespace internal
-
-namespace internal {
-
-/// `remove_edge` with its settings spelled out; the new cells (finite and
-/// infinite) are appended to `created`.
+/// `remove_edge` on a star already gathered.
 template <class Tr, class Measure, bool larger_is_worse, class Constraints>
-Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
-                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                const Constraints& constraints, int maximum,
-                                std::vector<typename Tr::Cell_handle>& created)
+Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
+                                     const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                     const Constraints& constraints, std::vector<typename Tr::Cell_handle>& created)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
-  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+  CGAL_precondition(tr.dimension() == 3);
 
   Edge_removal_report report;
-  const Edge_star<Tr> star(tr, e, maximum);
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
-  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
   const int n = report.ring_size;
   for(int k = 0; k < n; ++k)
   {
@@ -338,10 +265,52 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
                                       : report.quality_after > report.quality_before * (1 + tolerance);
   if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
 
-  const auto cells = replace_edge_star(tr, star, best.cells(), constraints);
+  const auto cells = replace_cells(tr, star.cells, best.cells(), constraints);
   created.insert(created.end(), cells.begin(), cells.end());
   report.new_cells = int(cells.size());
   report.outcome = EDGE_REMOVED;
+  return report;
+}
+
+/// The edges whose removal failed, with the signature of their star then: a
+/// removal depends on the star alone (the points never move), so a second
+/// attempt on the same star is answered from here. The drivers try the same
+/// edges again and again as the cells around them change.
+template <class Tr>
+struct Edge_removal_failures
+{
+  struct Failure
+  {
+    std::uint64_t signature;
+    Edge_removal_report report;
+  };
+  Flat_hash_map<Edge_key<Tr>, Failure, Edge_key_hash> failures;
+};
+
+/// `remove_edge` with its settings spelled out; the new cells (finite and
+/// infinite) are appended to `created`. With `failures`, a star already
+/// tried is not tried again.
+template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
+                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                const Constraints& constraints, int maximum,
+                                std::vector<typename Tr::Cell_handle>& created,
+                                Edge_removal_failures<Tr>* failures = nullptr)
+{
+  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+  Edge_removal_report report;
+  const Edge_star<Tr> star(tr, e, maximum);
+  report.ring_size = int(star.cells.size());
+  report.on_hull = star.on_hull;
+  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
+  if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, created);
+  const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
+  const std::uint64_t signature = star.signature();
+  if(const auto* known = failures->failures.find(key))
+    if(known->signature == signature) return known->report;
+  report = remove_edge_star(tr, star, criterion, constraints, created);
+  if(report.removed()) failures->failures.erase(key);
+  else failures->failures[key] = {signature, report};
   return report;
 }
 

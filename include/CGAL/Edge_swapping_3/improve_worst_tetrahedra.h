@@ -1,7 +1,8 @@
 // The quality driver: hill climbing on the worst tetrahedra first. A heap
 // holds the finite cells by the criterion's measure, worst on top; the worst
 // cell is taken and the operations are tried on it in a fixed order (edge
-// removal on its six edges, then the flip of each of its four facets); the
+// removal on its six edges, multi-face removal at its four facets, then the
+// flip of each of its four facets); the
 // first that improves the worst tetrahedron of its neighbourhood is made, and
 // the cells that share an edge with a new cell (their operations changed) go
 // into the heap. The run ends when the heap is empty: then no operation
@@ -15,10 +16,12 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <queue>
 #include <vector>
 
@@ -28,9 +31,10 @@ namespace Edge_swapping_3 {
 /// The operations of the quality driver, as bits.
 enum Quality_operation : unsigned
 {
-  FLIPS = 1,        ///< 2-3, 3-2, 2-2 and 4-4 flips of the cell's facets
-  EDGE_REMOVAL = 2, ///< edge removal on the cell's edges
-  ALL_OPERATIONS = FLIPS | EDGE_REMOVAL
+  FLIPS = 1,              ///< 2-3, 3-2, 2-2 and 4-4 flips of the cell's facets
+  EDGE_REMOVAL = 2,       ///< edge removal on the cell's edges
+  MULTI_FACE_REMOVAL = 4, ///< multi-face removal at the cell's facets
+  ALL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL
 };
 
 /// The report of `improve_worst_tetrahedra`.
@@ -40,13 +44,15 @@ struct Quality_report
   std::size_t visits = 0;                       ///< cells taken from the heap that still existed
   std::size_t stuck = 0;                        ///< of those, the cells no operation improved
   std::size_t edge_removals = 0;                ///< edges removed
+  std::size_t face_removals = 0;                ///< multi-face removals made
+  std::size_t faces_removed = 0;                ///< triangles they removed
   std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
   double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells in the domain
   double seconds = 0;
 
   std::size_t number_of_operations() const
   {
-    std::size_t n = edge_removals;
+    std::size_t n = edge_removals + face_removals;
     for(std::size_t f : flips) n += f;
     return n;
   }
@@ -67,20 +73,40 @@ struct Worst_cell_entry
   }
 };
 
+/// Removes the repeated items of `items`, keeping each first occurrence in
+/// place: the order stays the order met, which no address decides.
+template <class Handle>
+void keep_first_occurrences(std::vector<Handle>& items)
+{
+  std::vector<std::pair<Handle, std::size_t>> sorted;
+  sorted.reserve(items.size());
+  for(std::size_t k = 0; k < items.size(); ++k) sorted.emplace_back(items[k], k);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<bool> keep(items.size(), false);
+  for(std::size_t k = 0; k < sorted.size(); ++k)
+    if(k == 0 || !(sorted[k].first == sorted[k - 1].first)) keep[sorted[k].second] = true;
+  std::size_t n = 0;
+  for(std::size_t k = 0; k < items.size(); ++k)
+    if(keep[k]) items[n++] = items[k];
+  items.resize(n);
+}
+
 } // namespace internal
 
 /// Improves the worst tetrahedra of `tr` under `criterion` (any
 /// `Worst_tetrahedron_criterion`: MinMax or MaxMin dihedral angle, an aspect
 /// ratio) by hill climbing, worst first: edge removal (`remove_edge`) on each
-/// edge of the worst cell, then the flip of each of its facets, the first
-/// that improves the worst tetrahedron where it acts. Every change improves
+/// edge of the worst cell, multi-face removal (`remove_faces`) at each of its
+/// facets, then the flip of each of its facets, the first that improves the
+/// worst tetrahedron where it acts. Every change improves
 /// that worst value beyond the criterion's relative tolerance, so the worst
 /// value over the mesh never gets worse and the run ends.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{operations} `FLIPS`, `EDGE_REMOVAL` or both (default `ALL_OPERATIONS`) \cgalParamNEnd
+///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `ALL_OPERATIONS`) \cgalParamNEnd
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
-///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
+///     triangles multi-face removal explores, default 10 \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most operations made, default 10 times the number of cells \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -121,23 +147,39 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     heap.push(Entry{score(c), pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   };
   // The cells whose operations may have changed: those sharing an edge with
-  // a new cell (the ring of that edge changed), each pushed once.
+  // a new cell (the ring of that edge changed), each pushed once. With
+  // multi-face removal, the cells around the new cells' vertices and their
+  // neighbours: the sandwich at a facet of a cell reads cells around the two
+  // vertices off that facet, the cell's own and its neighbour's across it.
   std::vector<Cell_handle> around;
+  std::vector<typename Tr::Vertex_handle> corners;
   auto push_around = [&](const std::vector<Cell_handle>& created) {
     around.clear();
-    for(Cell_handle c : created)
+    if(operations & MULTI_FACE_REMOVAL)
     {
-      if(tr.is_infinite(c)) continue;
-      for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j)
-        {
-          auto circ = tr.incident_cells(c, i, j), done = circ;
-          do
-          {
-            if(std::find(around.begin(), around.end(), Cell_handle(circ)) == around.end()) around.push_back(circ);
-          } while(++circ != done);
-        }
+      corners.clear();
+      for(Cell_handle c : created)
+        for(int i = 0; i < 4; ++i)
+          if(!tr.is_infinite(c->vertex(i))) corners.push_back(c->vertex(i));
+      internal::keep_first_occurrences(corners);
+      for(auto v : corners) tr.incident_cells(v, std::back_inserter(around));
+      const std::size_t star_cells = around.size();
+      for(std::size_t k = 0; k < star_cells; ++k)
+        for(int i = 0; i < 4; ++i) around.push_back(around[k]->neighbor(i));
     }
+    else
+      for(Cell_handle c : created)
+      {
+        if(tr.is_infinite(c)) continue;
+        for(int i = 0; i < 4; ++i)
+          for(int j = i + 1; j < 4; ++j)
+          {
+            auto circ = tr.incident_cells(c, i, j), done = circ;
+            do around.push_back(circ);
+            while(++circ != done);
+          }
+      }
+    internal::keep_first_occurrences(around);
     for(Cell_handle c : around) push(c);
   };
 
@@ -145,6 +187,14 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   report.worst_before = worst();
   for(Cell_handle c : tr.finite_cell_handles()) push(c);
   std::vector<Cell_handle> created;
+  internal::Edge_removal_failures<Tr> failures;
+  internal::Multi_face_removal_failures<Tr> face_failures;
+  // With both removals, a flip of a facet of the cell is never needed: the
+  // 3-2, 4-4 and 2-2 flips are edge removals of the cell's edges, the 2-3 flip
+  // the one-triangle disk of multi-face removal, and either removal takes its
+  // best option, which beats the old cells whenever the flip would.
+  const bool flips = (operations & FLIPS) &&
+                     (operations & (EDGE_REMOVAL | MULTI_FACE_REMOVAL)) != (EDGE_REMOVAL | MULTI_FACE_REMOVAL);
   while(!heap.empty())
   {
     if(report.number_of_operations() >= limit)
@@ -162,12 +212,25 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(operations & EDGE_REMOVAL)
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
-          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, maximum_ring, created).removed())
+          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, maximum_ring, created, &failures)
+                 .removed())
           {
             ++report.edge_removals;
             improved = true;
           }
-    if(operations & FLIPS)
+    if(operations & MULTI_FACE_REMOVAL)
+      for(int i = 0; i < 4 && !improved; ++i)
+      {
+        const auto r =
+            internal::remove_faces(tr, typename Tr::Facet(c, i), criterion, constraints, maximum_ring, created, &face_failures);
+        if(r.removed())
+        {
+          ++report.face_removals;
+          report.faces_removed += std::size_t(r.faces);
+          improved = true;
+        }
+      }
+    if(flips)
       for(int i = 0; i < 4 && !improved; ++i)
       {
         const auto conf = classify_facet(tr, c, i);

@@ -49,12 +49,11 @@ std::array<Vec, 4> to_vecs(const Point& p0, const Point& p1, const Point& p2, co
 inline double finite_ratio(double r) { return (r >= 0 && r <= DBL_MAX) ? r : DBL_MAX; }
 } // namespace internal
 
-/// The six dihedral angles, in degrees, of a non-degenerate tetrahedron.
+namespace internal {
+// The cosines of the six dihedral angles of a non-degenerate tetrahedron.
 template <class Point>
-std::array<double, 6> dihedral_angles(const Point& p0, const Point& p1,
-                                      const Point& p2, const Point& p3)
+std::array<double, 6> dihedral_cosines(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
 {
-  using namespace internal;
   const auto v = to_vecs(p0, p1, p2, p3);
   // Outward normal of the face opposite vertex k.
   std::array<Vec, 4> n;
@@ -67,20 +66,51 @@ std::array<double, 6> dihedral_angles(const Point& p0, const Point& p1,
     if(dot(nk, sub(v[k], a)) > 0) nk = Vec{-nk.x, -nk.y, -nk.z};
     n[k] = nk;
   }
+  std::array<double, 4> lengths;
+  for(int k = 0; k < 4; ++k) lengths[k] = norm(n[k]);
   static const int faces[6][2] = {{2, 3}, {1, 3}, {1, 2}, {0, 3}, {0, 2}, {0, 1}};
-  std::array<double, 6> angles;
-  const double to_degrees = 180.0 / 3.14159265358979323846;
+  std::array<double, 6> cosines;
   for(int e = 0; e < 6; ++e)
   {
     const Vec& a = n[faces[e][0]];
     const Vec& b = n[faces[e][1]];
-    const double length = norm(a) * norm(b);
+    const double length = lengths[faces[e][0]] * lengths[faces[e][1]];
     // A face too thin for double precision has no normal: call its angles 0.
-    double c = length > 0 ? -dot(a, b) / length : 1.0;
-    c = std::isfinite(c) ? (std::max)(-1.0, (std::min)(1.0, c)) : 1.0;
-    angles[e] = std::acos(c) * to_degrees;
+    const double c = length > 0 ? -dot(a, b) / length : 1.0;
+    cosines[e] = std::isfinite(c) ? (std::max)(-1.0, (std::min)(1.0, c)) : 1.0;
   }
+  return cosines;
+}
+
+inline double degrees_of_cosine(double c) { return std::acos(c) * (180.0 / 3.14159265358979323846); }
+} // namespace internal
+
+/// The six dihedral angles, in degrees, of a non-degenerate tetrahedron.
+template <class Point>
+std::array<double, 6> dihedral_angles(const Point& p0, const Point& p1,
+                                      const Point& p2, const Point& p3)
+{
+  const auto cosines = internal::dihedral_cosines(p0, p1, p2, p3);
+  std::array<double, 6> angles;
+  for(int e = 0; e < 6; ++e) angles[e] = internal::degrees_of_cosine(cosines[e]);
   return angles;
+}
+
+/// The largest dihedral angle, in degrees, with one `acos` (the angle
+/// decreases with its cosine).
+template <class Point>
+double largest_dihedral_angle(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const auto cosines = internal::dihedral_cosines(p0, p1, p2, p3);
+  return internal::degrees_of_cosine(*std::min_element(cosines.begin(), cosines.end()));
+}
+
+/// The smallest dihedral angle, in degrees, with one `acos`.
+template <class Point>
+double smallest_dihedral_angle(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+{
+  const auto cosines = internal::dihedral_cosines(p0, p1, p2, p3);
+  return internal::degrees_of_cosine(*std::max_element(cosines.begin(), cosines.end()));
 }
 
 /// Longest over shortest edge (the paper's first aspect ratio; 1 for a regular tetrahedron).

@@ -1,0 +1,220 @@
+// The peers of the quality benchmark (issue 11): each takes the same mesh as
+// lists of points and tetrahedra with a subdomain per tetrahedron, and gives
+// its result back the same way, so that one quality code measures every row.
+//  - TetGen 1.5's optimizer through libtet (when CMake found it): the mesh is
+//    reconstructed (`-r`) with its boundary triangles as subfaces, then
+//    `optimizemesh` runs with the thresholds set in `tetgenbehavior` directly
+//    (the program cannot lower its 165 degree target without `-q`, which
+//    inserts points); `facet_ang_tol = 180` so that no boundary face flips.
+//  - CGAL's Tetrahedral_remeshing: its remesher's flip step alone, or flips
+//    and smoothing, each step repeated; boundaries (facets between subdomains,
+//    the hull) protected.
+
+#ifndef EDGE_SWAPPING_3_BENCHMARK_QUALITY_PEERS_H
+#define EDGE_SWAPPING_3_BENCHMARK_QUALITY_PEERS_H
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/tetrahedral_remeshing.h>
+#include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
+#include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+#ifdef EDGE_SWAPPING_3_WITH_TETGEN
+#include <tetgen.h>
+#endif
+
+namespace quality_peers {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+
+/// A mesh as lists; `subdomains[k]` is that of `cells[k]`.
+struct Cell_mesh
+{
+  std::vector<K::Point_3> points;
+  std::vector<std::array<std::size_t, 4>> cells;
+  std::vector<int> subdomains;
+};
+
+/// What a peer did: its result, its time (optimization only, no conversion)
+/// and the number of points it moved.
+struct Peer_result
+{
+  Cell_mesh mesh;
+  double seconds = 0;
+  std::size_t moved = 0;
+  std::string error; ///< empty when it ran
+};
+
+/// The cells of `tr`, its vertices numbered by `index`; `subdomain(c)` names
+/// a finite cell's subdomain.
+template <class Tr, class Index, class Subdomain>
+Cell_mesh cell_mesh_of(const Tr& tr, const std::vector<K::Point_3>& points, const Index& index,
+                       const Subdomain& subdomain)
+{
+  Cell_mesh m;
+  m.points = points;
+  for(auto c : tr.finite_cell_handles())
+  {
+    m.cells.push_back({index(c->vertex(0)), index(c->vertex(1)), index(c->vertex(2)), index(c->vertex(3))});
+    m.subdomains.push_back(subdomain(c));
+  }
+  return m;
+}
+
+/// The triangles kept fixed by every optimizer: facets between two
+/// subdomains, or on the hull, as sorted point triples.
+inline std::vector<std::array<std::size_t, 3>> boundary_triangles(const Cell_mesh& m)
+{
+  std::map<std::array<std::size_t, 3>, std::pair<int, int>> faces; // subdomain on each side (0: none)
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+    for(int i = 0; i < 4; ++i)
+    {
+      std::array<std::size_t, 3> t;
+      for(int j = 0, n = 0; j < 4; ++j)
+        if(j != i) t[n++] = m.cells[k][j];
+      std::sort(t.begin(), t.end());
+      auto& sides = faces[t];
+      (sides.first == 0 ? sides.first : sides.second) = m.subdomains[k];
+    }
+  std::vector<std::array<std::size_t, 3>> boundary;
+  for(const auto& [t, sides] : faces)
+    if(sides.first != sides.second) boundary.push_back(t);
+  return boundary;
+}
+
+/// CGAL's Tetrahedral_remeshing: `iterations` times (with `smooth`) its
+/// smoothing step, then its flip step; boundaries protected.
+inline Peer_result cgal_remeshing(const Cell_mesh& in, bool smooth, int iterations)
+{
+  typedef CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<K> Tr;
+  typedef std::pair<Tr::Vertex_handle, Tr::Vertex_handle> Edge_vv;
+  typedef CGAL::Tetrahedral_remeshing::internal::No_constraint_pmap<Edge_vv> No_edge;
+  typedef CGAL::Tetrahedral_remeshing::internal::No_constraint_pmap<Tr::Facet> No_facet;
+  typedef CGAL::Tetrahedral_remeshing::internal::All_cells_selected<Tr> All_cells;
+  typedef CGAL::Tetrahedral_remeshing::internal::Default_remeshing_visitor Visitor;
+  typedef CGAL::Uniform_sizing_field<K> Sizing;
+  typedef CGAL::Tetrahedral_remeshing::internal::Adaptive_remesher<Tr, Sizing, No_edge, No_facet, All_cells, Visitor>
+      Remesher;
+
+  Peer_result r;
+  Tr tr;
+  std::vector<Tr::Vertex_handle> vertices;
+  std::vector<Tr::Cell_handle> cells;
+  r.error = CGAL::Edge_swapping_3::build_triangulation_from_cells(tr, in.points, in.cells, vertices, cells);
+  if(!r.error.empty()) return r;
+  for(auto c : tr.all_cell_handles()) c->set_subdomain_index(0);
+  for(std::size_t k = 0; k < cells.size(); ++k) cells[k]->set_subdomain_index(in.subdomains[k]);
+  std::map<Tr::Vertex_handle, std::size_t> index;
+  for(std::size_t k = 0; k < vertices.size(); ++k) index[vertices[k]] = k;
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Visitor visitor;
+  // The sizing is read by split and collapse only, which are not called.
+  Remesher remesher(tr, Sizing(1.0), true, No_edge(), No_facet(), false, All_cells(), visitor);
+  // Smoothing first: the flips after it repair the slivers it makes (the
+  // other order, ending on a smoothing step, left 130 tetrahedra below 10
+  // degrees on the two-spheres mesh).
+  for(int k = 0; k < iterations; ++k)
+  {
+    if(smooth) remesher.smooth();
+    remesher.flip();
+  }
+  remesher.finalize();
+  r.seconds = timer.time();
+
+  std::vector<K::Point_3> points(in.points.size());
+  for(const auto& [v, k] : index)
+  {
+    points[k] = v->point();
+    r.moved += (points[k] != in.points[k]);
+  }
+  r.mesh = cell_mesh_of(tr, points, [&](Tr::Vertex_handle v) { return index.at(v); },
+                        [](Tr::Cell_handle c) { return int(c->subdomain_index()); });
+  return r;
+}
+
+#ifdef EDGE_SWAPPING_3_WITH_TETGEN
+/// TetGen's `optimizemesh` on the mesh, flips only (`optscheme` 1) or with
+/// smoothing (3), aiming at `max_dihedral` degrees.
+inline Peer_result tetgen_optimizer(const Cell_mesh& in, int optscheme, double max_dihedral)
+{
+  Peer_result r;
+  tetgenio io; // frees its arrays with delete[]
+  io.firstnumber = 0;
+  io.numberofpoints = int(in.points.size());
+  io.pointlist = new REAL[3 * in.points.size()];
+  for(std::size_t k = 0; k < in.points.size(); ++k)
+    for(int d = 0; d < 3; ++d) io.pointlist[3 * k + d] = in.points[k][d];
+  io.numberoftetrahedra = int(in.cells.size());
+  io.numberofcorners = 4;
+  io.tetrahedronlist = new int[4 * in.cells.size()];
+  io.numberoftetrahedronattributes = 1;
+  io.tetrahedronattributelist = new REAL[in.cells.size()];
+  for(std::size_t k = 0; k < in.cells.size(); ++k)
+  {
+    for(int i = 0; i < 4; ++i) io.tetrahedronlist[4 * k + i] = int(in.cells[k][i]);
+    io.tetrahedronattributelist[k] = in.subdomains[k];
+  }
+  const auto boundary = boundary_triangles(in);
+  io.numberoftrifaces = int(boundary.size());
+  io.trifacelist = new int[3 * boundary.size()];
+  io.trifacemarkerlist = new int[boundary.size()];
+  for(std::size_t k = 0; k < boundary.size(); ++k)
+  {
+    for(int i = 0; i < 3; ++i) io.trifacelist[3 * k + i] = int(boundary[k][i]);
+    io.trifacemarkerlist[k] = 1;
+  }
+
+  tetgenbehavior b;
+  b.refine = 1;
+  b.quiet = 1;
+  b.optlevel = 2;
+  b.optscheme = optscheme;
+  b.optmaxdihedral = max_dihedral;
+  b.facet_ang_tol = 180;
+  b.steinerleft = 0;
+
+  tetgenmesh m;
+  m.b = &b;
+  m.in = &io;
+  m.initializepools();
+  m.transfernodes();
+  exactinit(b.verbose, b.noexact, b.nostaticfilter, m.xmax - m.xmin, m.ymax - m.ymin, m.zmax - m.zmin);
+  m.reconstructmesh();
+  CGAL::Real_timer timer;
+  timer.start();
+  m.optimizemesh();
+  r.seconds = timer.time();
+
+  tetgenio out;
+  m.outnodes(&out);
+  m.outelements(&out);
+  if(out.numberofpoints != io.numberofpoints)
+  {
+    r.error = "TetGen changed the number of points";
+    return r;
+  }
+  for(int k = 0; k < out.numberofpoints; ++k)
+  {
+    const K::Point_3 p(out.pointlist[3 * k], out.pointlist[3 * k + 1], out.pointlist[3 * k + 2]);
+    r.mesh.points.push_back(p);
+    r.moved += (p != in.points[std::size_t(k)]);
+  }
+  const int first = out.firstnumber;
+  for(int k = 0; k < out.numberoftetrahedra; ++k)
+  {
+    std::array<std::size_t, 4> t;
+    for(int i = 0; i < 4; ++i) t[i] = std::size_t(out.tetrahedronlist[4 * k + i] - first);
+    r.mesh.cells.push_back(t);
+    r.mesh.subdomains.push_back(out.numberoftetrahedronattributes > 0 ? int(out.tetrahedronattributelist[k]) : 1);
+  }
+  return r;
+}
+#endif
+
+} // namespace quality_peers
+
+#endif // EDGE_SWAPPING_3_BENCHMARK_QUALITY_PEERS_H
