@@ -22,6 +22,7 @@
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
+#include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
 #include <CGAL/Edge_swapping_3/internal/swap_driver.h>

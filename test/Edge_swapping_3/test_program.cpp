@@ -208,6 +208,7 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --operations flips", "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing",
        "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
        "optimize " + in + out + " --criterion min-edges --operations edge-removal",
+       "optimize " + in + out + " --criterion minmax-dihedral --operations multi-face",
        "optimize " + in + out + " --criterion radius-ratio --operations flips --history " + w.path("h.csv")})
   {
     INFO("edge_swap " << args);
@@ -307,16 +308,21 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
 {
   Workdir w;
   write_random_node(w, "cube.node", 300, 13);
-  for(const std::string criterion : {"minmax-dihedral", "radius-ratio"})
+  const std::pair<std::string, std::string> runs[] = {{"minmax-dihedral", "flips,edge-removal"},
+                                                       {"radius-ratio", "multi-face-removal"},
+                                                       {"maxmin-dihedral", "all"}};
+  for(const auto& [criterion, operations] : runs)
   {
-    INFO(criterion);
+    INFO(criterion << " " << operations);
     const Run r = w.run("optimize " + w.path("cube.node") + " --start delaunay --criterion " + criterion +
-                        " --operations flips,edge-removal -o " + w.path("out.ele") + " --stats " + w.path("s.json"));
+                        " --operations " + operations + " -o " + w.path("out.ele") + " --stats " + w.path("s.json"));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    REQUIRE(r.out.find("worst first (flips,edge-removal): converged") != std::string::npos);
+    REQUIRE(r.out.find("worst first (" + operations + "): converged") != std::string::npos);
     const std::string stats = Workdir::slurp(w.path("s.json"));
     REQUIRE(stats.find("\"edge_removals\"") != std::string::npos);
+    REQUIRE(stats.find("\"multi_face_removals\"") != std::string::npos);
+    if(operations != "flips,edge-removal") REQUIRE(stats.find("\"multi_face_removals\": 0,") == std::string::npos);
     REQUIRE(stats.find("\"driver\": \"worst first\"") != std::string::npos);
     const Run c = w.run("check " + w.path("out.ele"));
     REQUIRE(c.exit_code == 0);
