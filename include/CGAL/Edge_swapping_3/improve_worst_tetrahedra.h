@@ -17,6 +17,7 @@
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
+#include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <algorithm>
 #include <array>
@@ -146,13 +147,19 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(!counted(c)) return;
     heap.push(Entry{score(c), pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   };
-  // The cells whose operations may have changed: those sharing an edge with
-  // a new cell (the ring of that edge changed), each pushed once. With
-  // multi-face removal, the cells around the new cells' vertices and their
-  // neighbours: the sandwich at a facet of a cell reads cells around the two
-  // vertices off that facet, the cell's own and its neighbour's across it.
+  // The cells whose operations may have changed, each pushed once. With edge
+  // removal alone: those sharing an edge with a new cell (the ring of that
+  // edge changed). With multi-face removal: a sandwich at a facet of a cell
+  // reads cells around the two vertices off that facet, no more than
+  // `maximum_ring` + 1 steps away through facets around that vertex, from
+  // the cell or from its neighbour across the facet. So for each vertex v
+  // of a new cell, the cells around v within `maximum_ring` + 2 such steps
+  // of a new cell, and their neighbours (a walk, not the whole star: a
+  // vertex of a placing triangulation has thousands of cells).
   std::vector<Cell_handle> around;
   std::vector<typename Tr::Vertex_handle> corners;
+  std::vector<std::pair<Cell_handle, int>> walk;
+  internal::Flat_hash_set<Cell_handle, internal::Handle_hash> seen;
   auto push_around = [&](const std::vector<Cell_handle>& created) {
     around.clear();
     if(operations & MULTI_FACE_REMOVAL)
@@ -162,10 +169,25 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         for(int i = 0; i < 4; ++i)
           if(!tr.is_infinite(c->vertex(i))) corners.push_back(c->vertex(i));
       internal::keep_first_occurrences(corners);
-      for(auto v : corners) tr.incident_cells(v, std::back_inserter(around));
-      const std::size_t star_cells = around.size();
-      for(std::size_t k = 0; k < star_cells; ++k)
-        for(int i = 0; i < 4; ++i) around.push_back(around[k]->neighbor(i));
+      for(auto v : corners)
+      {
+        // Breadth first from the new cells around v, through facets around v.
+        walk.clear();
+        seen.clear();
+        for(Cell_handle c : created)
+          if(c->has_vertex(v) && seen.insert(c)) walk.emplace_back(c, 0);
+        for(std::size_t k = 0; k < walk.size(); ++k)
+        {
+          const auto [c, depth] = walk[k];
+          around.push_back(c);
+          for(int i = 0; i < 4; ++i)
+          {
+            const Cell_handle n = c->neighbor(i);
+            around.push_back(n);
+            if(depth < maximum_ring + 2 && c->vertex(i) != v && seen.insert(n)) walk.emplace_back(n, depth + 1);
+          }
+        }
+      }
     }
     else
       for(Cell_handle c : created)
