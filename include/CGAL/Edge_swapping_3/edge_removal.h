@@ -19,6 +19,7 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/removal_failures.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -272,20 +273,9 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
   return report;
 }
 
-/// The edges whose removal failed, with the signature of their star then: a
-/// removal depends on the star alone (the points never move), so a second
-/// attempt on the same star is answered from here. The drivers try the same
-/// edges again and again as the cells around them change.
+/// The edges whose removal failed, with the signature of their star then.
 template <class Tr>
-struct Edge_removal_failures
-{
-  struct Failure
-  {
-    std::uint64_t signature;
-    Edge_removal_report report;
-  };
-  Flat_hash_map<Edge_key<Tr>, Failure, Edge_key_hash> failures;
-};
+using Edge_removal_failures = Removal_failures<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
 
 /// `remove_edge` with its settings spelled out; the new cells (finite and
 /// infinite) are appended to `created`. With `failures`, a star already
@@ -306,11 +296,9 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, created);
   const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
   const std::uint64_t signature = star.signature();
-  if(const auto* known = failures->failures.find(key))
-    if(known->signature == signature) return known->report;
+  if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
   report = remove_edge_star(tr, star, criterion, constraints, created);
-  if(report.removed()) failures->failures.erase(key);
-  else failures->failures[key] = {signature, report};
+  failures->record(key, signature, report);
   return report;
 }
 

@@ -21,6 +21,7 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/removal_failures.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -203,17 +204,9 @@ private:
 };
 
 /// The facets where multi-face removal failed, with the signature of the
-/// cells it read then (see `Edge_removal_failures`).
+/// cells it read then.
 template <class Tr>
-struct Multi_face_removal_failures
-{
-  struct Failure
-  {
-    std::uint64_t signature;
-    Multi_face_removal_report report;
-  };
-  Flat_hash_map<Facet_key<Tr>, Failure, Facet_key_hash> failures;
-};
+using Multi_face_removal_failures = Removal_failures<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
 
 /// The best disk of an explored sandwich, made when it improves.
 template <class Tr, class Sandwich, class Score, class Constraints>
@@ -319,14 +312,9 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   // A facet tried before, with the same cells around: the same failure.
   const Facet_key<Tr> key = facet_key<Tr>(c, f.second);
   if(failures != nullptr)
-    if(const auto* known = failures->failures.find(key))
-      if(known->signature == sandwich.signature()) return known->report;
+    if(const Multi_face_removal_report* known = failures->find(key, sandwich.signature())) return *known;
   report = decide_removal(tr, sandwich, score, larger_is_worse, criterion.relative_tolerance, constraints, created);
-  if(failures != nullptr)
-  {
-    if(report.removed()) failures->failures.erase(key);
-    else failures->failures[key] = {sandwich.signature(), report};
-  }
+  if(failures != nullptr) failures->record(key, sandwich.signature(), report);
   return report;
 }
 
