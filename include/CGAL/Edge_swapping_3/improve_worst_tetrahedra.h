@@ -2,11 +2,10 @@
 // holds the finite cells by the criterion's measure, worst on top; the worst
 // cell is taken and the operations are tried on it in a fixed order (edge
 // removal on its six edges, multi-face removal at its four facets, then the
-// flip of each of its four facets); the
-// first that improves the worst tetrahedron of its neighbourhood is made, and
-// the cells that share an edge with a new cell (their operations changed) go
-// into the heap. The run ends when the heap is empty: then no operation
-// improves any cell, and a second run makes no change.
+// flip of each of its four facets); the first that improves the worst
+// tetrahedron of its neighbourhood is made, and the cells whose operations
+// that changed go into the heap. The run ends when the heap is empty: then no
+// operation improves any cell, and a second run makes no change.
 
 #ifndef CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
 #define CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
