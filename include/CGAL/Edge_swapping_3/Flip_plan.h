@@ -59,6 +59,21 @@ typename Flip_plan<Tr>::Tuple tuple_of(typename Tr::Cell_handle c)
   return {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
 }
 
+/// +1 when `t` is an even permutation of the vertices of `c` (then
+/// positively oriented, as `c` is), else -1: an orientation read off the
+/// cell's own vertex order, without coordinates.
+template <class Tr>
+int permutation_sign(typename Tr::Cell_handle c, const typename Flip_plan<Tr>::Tuple& t)
+{
+  std::array<int, 4> p;
+  for(int k = 0; k < 4; ++k) p[k] = c->index(t[k]);
+  int sign = 1;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+      if(p[i] > p[j]) sign = -sign;
+  return sign;
+}
+
 template <class Tuple, class Vertex_handle>
 Tuple replaced(Tuple t, Vertex_handle from, Vertex_handle to)
 {

@@ -100,7 +100,7 @@ struct Edge_star
         if(v != a && v != b && prev->has_vertex(v)) { ring[k] = v; break; }
       }
     }
-    if(permutation_sign(cells[0], {a, b, ring[0], ring[1 % n]}) > 0)
+    if(permutation_sign<Tr>(cells[0], {a, b, ring[0], ring[1 % n]}) > 0)
     {
       // Turn the other way: cell k must hold s_k and s_{k+1}.
       std::reverse(ring.begin(), ring.end());
@@ -129,18 +129,6 @@ struct Edge_star
       h += mix_bits(u ^ mix_bits(v));
     }
     return h;
-  }
-
-  /// +1 when `t` is an even permutation of the vertices of `c`, else -1.
-  static int permutation_sign(Cell_handle c, const std::array<Vertex_handle, 4>& t)
-  {
-    std::array<int, 4> p;
-    for(int k = 0; k < 4; ++k) p[k] = c->index(t[k]);
-    int sign = 1;
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j)
-        if(p[i] > p[j]) sign = -sign;
-    return sign;
   }
 };
 

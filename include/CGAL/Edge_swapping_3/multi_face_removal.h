@@ -27,7 +27,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <map>
 #include <vector>
 
@@ -66,7 +65,7 @@ namespace internal {
 
 /// The sandwiched triangles reachable from a facet, as a tree, and the best
 /// disk among them.
-template <class Tr, class Score>
+template <class Tr, class Score, class May_go_on>
 class Face_sandwich
 {
 public:
@@ -89,7 +88,7 @@ public:
   /// Explores the sandwiched triangles around `root`, depth first, at most
   /// `maximum_faces` of them.
   Face_sandwich(const Tr& tr, Vertex_handle u, Vertex_handle w, const Node& root, int maximum_faces,
-                const Score& score, const std::function<bool(const Node&, int, Cell_handle, Cell_handle)>& may_go_on)
+                const Score& score, const May_go_on& may_go_on)
     : tr_(tr), u_(u), w_(w), maximum_(maximum_faces), score_(score), may_go_on_(may_go_on)
   {
     nodes_.push_back(root);
@@ -197,7 +196,7 @@ private:
   Vertex_handle u_, w_;
   int maximum_;
   const Score& score_;
-  std::function<bool(const Node&, int, Cell_handle, Cell_handle)> may_go_on_;
+  const May_go_on& may_go_on_;
   std::vector<Node> nodes_;
   double value_ = -HUGE_VAL;
   std::uint64_t signature_ = 0;
@@ -282,32 +281,27 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
 
   auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
   auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
-  typedef Face_sandwich<Tr, decltype(score)> Sandwich;
-  typename Sandwich::Node root;
-  {
-    // (t0, t1, t2, u) positive: an even permutation of c's own vertex order.
-    std::array<Vertex_handle, 3> t = {c->vertex((f.second + 1) & 3), c->vertex((f.second + 2) & 3),
-                                      c->vertex((f.second + 3) & 3)};
-    std::array<int, 4> p = {c->index(t[0]), c->index(t[1]), c->index(t[2]), f.second};
-    int sign = 1;
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j)
-        if(p[i] > p[j]) sign = -sign;
-    if(sign < 0) std::swap(t[0], t[1]);
-    root.t = t;
-    root.cu = c;
-    root.cw = d;
-  }
   // Going on across edge k of a node removes the facets (p, q, u) and
   // (p, q, w) and the triangle across: none may be constrained, and the
   // cells must lie in the subdomain of the first.
-  auto may_go_on = [&](const typename Sandwich::Node& node, int k, Cell_handle cu, Cell_handle cw) {
+  auto may_go_on = [&](const auto& node, int k, Cell_handle cu, Cell_handle cw) {
     const Vertex_handle r0 = node.t[(k + 2) % 3];
     const int iu = node.cu->index(r0), iw = node.cw->index(r0);
     return constraints.same_subdomain(cu, c) && constraints.same_subdomain(cw, c) &&
            !constraints.is_facet_constrained(node.cu, iu) && !constraints.is_facet_constrained(node.cw, iw) &&
            !constraints.is_facet_constrained(cu, cu->index(u));
   };
+  typedef Face_sandwich<Tr, decltype(score), decltype(may_go_on)> Sandwich;
+  typename Sandwich::Node root;
+  {
+    // (t0, t1, t2, u) positive: an even permutation of c's own vertex order.
+    std::array<Vertex_handle, 3> t = {c->vertex((f.second + 1) & 3), c->vertex((f.second + 2) & 3),
+                                      c->vertex((f.second + 3) & 3)};
+    if(permutation_sign<Tr>(c, {t[0], t[1], t[2], u}) < 0) std::swap(t[0], t[1]);
+    root.t = t;
+    root.cu = c;
+    root.cw = d;
+  }
   Sandwich sandwich(tr, u, w, root, maximum_faces, score, may_go_on);
   // A facet tried before, with the same cells around: the same failure.
   const Facet_key<Tr> key = facet_key<Tr>(c, f.second);
