@@ -14,7 +14,7 @@
 // operations. Each output is validated (rebuilt, orientations checked) and
 // its boundary triangles compared with the input's.
 //
-//   benchmark_quality_operations
+//   benchmark_quality_operations [two-spheres|delaunay|placing]   (default: all three inputs)
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>
@@ -78,12 +78,21 @@ void print(const char* name, const Quality_row& q, double seconds, const std::st
   std::fflush(stdout);
 }
 
+// The vertices of `tr` that are not where a point of `input` is.
+std::size_t moved_vertices(const Triangulation& tr, const quality_peers::Cell_mesh& input)
+{
+  const std::set<K::Point_3> at(input.points.begin(), input.points.end());
+  std::size_t moved = 0;
+  for(auto v : tr.finite_vertex_handles()) moved += !at.count(v->point());
+  return moved;
+}
+
 std::string operations_of(const ES::Quality_report& r)
 {
   return std::to_string(r.edge_removals) + " edge removals, " + std::to_string(r.face_removals) + " multi-face (" +
          std::to_string(r.faces_removed) + " faces), " + std::to_string(r.flips[ES::FLIP_2_3]) + " 2-3, " +
          std::to_string(r.flips[ES::FLIP_3_2]) + " 3-2, " + std::to_string(r.flips[ES::FLIP_4_4] + r.flips[ES::FLIP_2_2]) +
-         " 4-4/2-2";
+         " 4-4/2-2, " + std::to_string(r.vertices_moved) + " smoothing moves";
 }
 
 // A peer's result, rebuilt as our triangulation (which validates it) and
@@ -138,26 +147,35 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
       {"edge removal", ES::EDGE_REMOVAL},
       {"multi-face removal", ES::MULTI_FACE_REMOVAL},
       {"edge + multi-face removal", ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL},
-      {"all three", ES::ALL_OPERATIONS}};
+      {"all three", ES::TOPOLOGICAL_OPERATIONS},
+      {"all three + smoothing", ES::ALL_OPERATIONS}};
   for(const auto& [name, operations] : variants)
   {
     Triangulation tr;
     make(tr);
     const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
     const auto r = ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), np);
-    print((std::string("worst first MinMax, ") + name).c_str(), quality(tr, counted(tr)), r.seconds, operations_of(r));
+    print((std::string("worst first MinMax, ") + name).c_str(), quality(tr, counted(tr)), r.seconds,
+          operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
   }
-  // The other measures, with all three operations.
-  auto other = [&](const auto& criterion, const char* row) {
-    Triangulation tr;
-    make(tr);
-    const auto r = ES::improve_worst_tetrahedra(tr, criterion, ES::parameters::mesh_constraints(constraints));
-    print(row, quality(tr, counted(tr)), r.seconds, operations_of(r));
+  // The other measures, with all three operations, then with smoothing.
+  auto other = [&](const auto& criterion, const char* measure) {
+    for(const unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
+    {
+      Triangulation tr;
+      make(tr);
+      const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
+      const auto r = ES::improve_worst_tetrahedra(tr, criterion, np);
+      const std::string row = std::string("worst first ") + measure +
+                              (operations == ES::ALL_OPERATIONS ? ", all three + smoothing" : ", all three");
+      print(row.c_str(), quality(tr, counted(tr)), r.seconds,
+            operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
+    }
   };
-  other(ES::Max_min_dihedral_angle_criterion(), "worst first MaxMin, all three");
-  other(ES::Max_min_radius_ratio_criterion(), "worst first radius ratio, all three");
-  other(ES::Max_min_dihedral_sine_criterion(), "worst first dihedral sine, all three");
-  other(ES::Max_min_volume_length_criterion(), "worst first volume-length, all three");
+  other(ES::Max_min_dihedral_angle_criterion(), "MaxMin");
+  other(ES::Max_min_radius_ratio_criterion(), "radius ratio");
+  other(ES::Max_min_dihedral_sine_criterion(), "dihedral sine");
+  other(ES::Max_min_volume_length_criterion(), "volume-length");
 
   // The peers. TetGen aims at 140 degrees, as in issue 11's table.
 #ifdef EDGE_SWAPPING_3_WITH_TETGEN
@@ -207,9 +225,16 @@ Cell_filter off_the_hull(const Triangulation& tr)
 
 } // namespace
 
-int main(int, char** argv)
+int main(int argc, char** argv)
 {
   start_benchmark(argv);
+  const std::string only = argc > 1 ? argv[1] : "";
+  auto wanted = [&](const char* input) { return only.empty() || only == input; };
+  if(!only.empty() && !wanted("two-spheres") && !wanted("delaunay") && !wanted("placing"))
+  {
+    std::fprintf(stderr, "unknown input '%s' (two-spheres, delaunay, placing)\n", only.c_str());
+    return 2;
+  }
   const std::string dir = (std::filesystem::temp_directory_path() / ("edge_swapping_3_quality_" + std::to_string(getpid()))).string();
   std::filesystem::create_directories(dir);
   const std::string mesh = dir + "/two_spheres.mesh";
@@ -218,12 +243,15 @@ int main(int, char** argv)
   std::filesystem::remove_all(dir);
 
   quality_peers::Cell_mesh two_spheres_cells{two_spheres.points, two_spheres.cells, two_spheres.cell_references};
+  if(wanted("two-spheres"))
+  {
   std::printf("\nTwo-spheres domain mesh, flow region (subdomain 1); boundaries and subdomains kept\n");
   std::printf("(%zu boundary triangles in the file, %zu facets between subdomains or on the hull)\n",
               two_spheres.triangles.size(), quality_peers::boundary_triangles(two_spheres_cells).size());
   rows([&](Triangulation& tr) { edge_swap::build_mesh(tr, two_spheres); }, ES::Domain_constraints(),
        [](const Triangulation&) { return Cell_filter([](Triangulation::Cell_handle c) { return c->info().subdomain == 1; }); },
        two_spheres_cells);
+  }
 
   const auto points = random_points(8000);
   quality_peers::Cell_mesh delaunay, placing;
@@ -241,6 +269,7 @@ int main(int, char** argv)
   }
   for(const auto* input : {&delaunay, &placing})
   {
+    if(!wanted(input == &delaunay ? "delaunay" : "placing")) continue;
     std::printf("\n%s of 8,000 random points, cells with no vertex on the hull\n",
                 input == &delaunay ? "Delaunay triangulation" : "Placing triangulation (no flip)");
     rows([&](Triangulation& tr) { build_point_set_mesh(tr, *input); }, ES::No_constraints(), off_the_hull, *input);

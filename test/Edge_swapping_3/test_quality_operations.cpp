@@ -2,8 +2,10 @@
 // tetrahedra with exact coordinates, Klincsek's dynamic program against every
 // triangulation of the ring, constraints, the hull, and random sequences of
 // removals on a Delaunay mesh. Multi-face removal: hand-built sandwiches of 1
-// to 6 triangles, constraints, random sequences. The quality driver (worst first): validity,
-// exact volume, the worst value, its ending, determinism, domain meshes.
+// to 6 triangles, constraints, random sequences. Vertex smoothing: a star with
+// a known best place, the boundary kept, random sequences. The quality driver
+// (worst first): validity, exact volume, the worst value, its ending,
+// determinism, domain meshes.
 
 #include "test_common.h"
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
@@ -11,6 +13,7 @@
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/vertex_smoothing.h>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -643,7 +646,8 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
   INFO("seed " << seed);
   const auto points = random_in_cube(500, seed);
   for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::EDGE_REMOVAL), unsigned(ES::MULTI_FACE_REMOVAL),
-                             unsigned(ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL), unsigned(ES::ALL_OPERATIONS)})
+                             unsigned(ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL), unsigned(ES::TOPOLOGICAL_OPERATIONS),
+                             unsigned(ES::ALL_OPERATIONS)})
     for(bool minmax : {false, true})
     {
       CAPTURE(operations, minmax);
@@ -660,7 +664,8 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
                  face_removals = (operations & ES::MULTI_FACE_REMOVAL) != 0;
       REQUIRE((removals || r.edge_removals == 0));
       REQUIRE((face_removals || r.face_removals == 0));
-      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals));
+      REQUIRE(((operations & ES::SMOOTHING) || r.vertices_moved == 0));
+      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals + r.vertices_moved));
       const double worst_now = minmax ? worst_largest_angle(tr) : worst_smallest_angle(tr);
       REQUIRE(r.worst_after == worst_now);
       // The worst cells of a random point set are slivers on the hull, which
@@ -675,7 +680,8 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
                          << " by " << r.edge_removals << " edge removals, " << r.face_removals
-                         << " multi-face removals and " << r.number_of_operations() - r.edge_removals - r.face_removals
+                         << " multi-face removals, " << r.vertices_moved << " smoothing moves and "
+                         << r.number_of_operations() - r.edge_removals - r.face_removals - r.vertices_moved
                          << " flips; " << r.visits << " visits, "
                          << r.stuck << " stuck");
       // Converged: no cell has an operation that helps, so a second run changes nothing.
@@ -741,17 +747,33 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
   };
   const auto volumes = subdomain_volumes();
   const auto facets = constrained_facets();
-  const auto r = ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(),
-                                              ES::parameters::mesh_constraints(ES::Domain_constraints()));
-  REQUIRE(r.ending == ES::CONVERGED);
-  REQUIRE(r.number_of_operations() > 0);
-  REQUIRE(r.worst_after >= r.worst_before);
-  REQUIRE(tr.is_valid());
-  REQUIRE(subdomain_volumes() == volumes);
-  REQUIRE(constrained_facets() == facets);
-  for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
-  WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.number_of_operations() - r.edge_removals
-                       << " flips; worst smallest angle " << r.worst_before << " -> " << r.worst_after);
+  const Domain_tr start = tr;
+  for(unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
+  {
+    CAPTURE(operations);
+    tr = start;
+    const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(ES::Domain_constraints()));
+    const auto r = ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np);
+    REQUIRE(r.ending == ES::CONVERGED);
+    REQUIRE(r.number_of_operations() > 0);
+    REQUIRE(r.worst_after >= r.worst_before);
+    REQUIRE(tr.is_valid());
+    REQUIRE(every_cell_positive(tr));
+    // Exact: the interface and the hull keep their vertices where they were.
+    REQUIRE(subdomain_volumes() == volumes);
+    REQUIRE(constrained_facets() == facets);
+    for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
+    WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.face_removals << " multi-face removals, "
+                         << r.vertices_moved << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
+                         << r.worst_after);
+    if(operations & ES::SMOOTHING)
+    {
+      REQUIRE(r.vertices_moved > 0);
+      const auto cells = cell_set(tr);
+      REQUIRE(ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np).number_of_operations() == 0);
+      REQUIRE(cell_set(tr) == cells);
+    }
+  }
 }
 
 TEST_CASE("Quality measures - 1 for the regular tetrahedron - 0 when flat - the sliver that the edge ratio misses",
@@ -826,4 +848,145 @@ TEST_CASE("The quality driver with each measure - never worse - converged - vali
   run(ES::Max_min_radius_ratio_criterion(), "radius ratio");
   run(ES::Max_min_dihedral_sine_criterion(), "dihedral sine");
   run(ES::Max_min_volume_length_criterion(), "volume-length");
+}
+
+TEST_CASE("Vertex smoothing moves an interior vertex to the best place of its star - keeps the hull", "[smoothing]")
+{
+  // The octahedron's six vertices and one point inside: every cell is a cone
+  // from that point over a facet of the hull (the six are cospherical, and
+  // the sphere holds the point). At the centre, the smart Laplacian, the
+  // eight cells are trirectangular, the best MaxMin place by symmetry; the
+  // smallest dihedral angle there is acos(1 / sqrt(3)).
+  Tr tr;
+  ES::insert_delaunay(tr, std::vector<Point>{Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0), Point(0, -1, 0),
+                                             Point(0, 0, 1), Point(0, 0, -1), Point(0.4, 0.3, -0.2)});
+  Tr::Vertex_handle inside, corner;
+  for(auto v : tr.finite_vertex_handles())
+  {
+    if(v->point() == Point(0.4, 0.3, -0.2)) inside = v;
+    if(v->point() == Point(1, 0, 0)) corner = v;
+  }
+  REQUIRE(tr.degree(inside) == 6);
+  const auto volume = exact_volume(tr);
+  const auto r = ES::smooth_vertex(tr, inside, ES::Max_min_dihedral_angle_criterion());
+  REQUIRE(r.outcome == ES::VERTEX_MOVED);
+  REQUIRE(r.star_size == 8);
+  REQUIRE(inside->point() == Point(0, 0, 0));
+  REQUIRE(std::abs(r.quality_after - std::acos(1 / std::sqrt(3.0)) * 180 / CGAL_PI) < 1e-9);
+  REQUIRE(r.quality_after > r.quality_before);
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(every_cell_positive(tr));
+  // Nothing better is left, and a hull vertex never moves.
+  REQUIRE(ES::smooth_vertex(tr, inside, ES::Max_min_dihedral_angle_criterion()).outcome == ES::NO_SMOOTHING_IMPROVEMENT);
+  REQUIRE(inside->point() == Point(0, 0, 0));
+  REQUIRE(ES::smooth_vertex(tr, corner, ES::Max_min_dihedral_angle_criterion()).outcome == ES::VERTEX_ON_BOUNDARY);
+  REQUIRE(corner->point() == Point(1, 0, 0));
+}
+
+TEST_CASE("Vertex smoothing climbs past the smart Laplacian to the best place on the axis", "[smoothing]")
+{
+  // An octahedron stretched upwards: the centroid of the six neighbours,
+  // (0, 0, 1/2), is not the best place (44.71 degrees); by symmetry the
+  // best is on the z axis (45.87 degrees, on a stretch of it), found here
+  // by scanning it.
+  const std::vector<Point> hull = {Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0), Point(0, -1, 0), Point(0, 0, 4),
+                                   Point(0, 0, -1)};
+  auto worst_at = [&](double z) {
+    double w = HUGE_VAL;
+    for(int k = 0; k < 8; ++k)
+    {
+      const Point& a = hull[k & 1];
+      const Point& b = hull[2 + ((k >> 1) & 1)];
+      const Point& c = hull[4 + ((k >> 2) & 1)];
+      w = std::min(w, smallest_angle(a, b, c, Point(0, 0, z)));
+    }
+    return w;
+  };
+  double best_scan = 0;
+  for(int k = 1; k < 5000; ++k) best_scan = std::max(best_scan, worst_at(-1 + 5.0 * k / 5000));
+  for(const double z0 : {-0.5, 0.1, 1.2})
+  {
+    CAPTURE(z0);
+    // The eight cones from the inside point over the octahedron's facets.
+    std::vector<Point> points = hull;
+    points.emplace_back(0.05, -0.03, z0);
+    std::vector<std::array<std::size_t, 4>> cells;
+    for(std::size_t k = 0; k < 8; ++k)
+    {
+      std::array<std::size_t, 4> t = {k & 1, 2 + ((k >> 1) & 1), 4 + ((k >> 2) & 1), 6};
+      if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+        std::swap(t[0], t[1]);
+      cells.push_back(t);
+    }
+    Tr tr;
+    std::vector<Tr::Vertex_handle> vertices;
+    std::vector<Tr::Cell_handle> handles;
+    REQUIRE(ES::build_triangulation_from_cells(tr, points, cells, vertices, handles).empty());
+    const Tr::Vertex_handle inside = vertices[6];
+    REQUIRE(tr.degree(inside) == 6);
+    const auto r = ES::smooth_vertex(tr, inside, ES::Max_min_dihedral_angle_criterion());
+    REQUIRE(r.outcome == ES::VERTEX_MOVED);
+    REQUIRE(r.steps >= 2);
+    WARN("from z = " << z0 << ": " << r.quality_before << " -> " << r.quality_after << " deg in " << r.steps
+                     << " steps at " << inside->point() << "; best on the axis " << best_scan);
+    REQUIRE(r.quality_after > best_scan - 0.05);
+    REQUIRE(every_cell_positive(tr));
+  }
+}
+
+TEST_CASE("Random sequences of smoothing keep validity - exact volume - the hull - and never worsen the worst",
+          "[smoothing]")
+{
+  for(unsigned seed : {21u, 22u})
+  {
+    INFO("seed " << seed);
+    Tr tr;
+    ES::insert_delaunay(tr, random_in_cube(300, seed));
+    const auto volume = exact_volume(tr);
+    auto hull_points = [&]() {
+      std::vector<Point> points;
+      Tr::Cell_handle c;
+      int i, j;
+      for(auto v : tr.finite_vertex_handles())
+        if(tr.is_edge(v, tr.infinite_vertex(), c, i, j)) points.push_back(v->point());
+      return points;
+    };
+    const auto hull = hull_points();
+    const ES::Max_min_dihedral_sine_criterion criterion;
+    auto worst = [&]() {
+      double w = HUGE_VAL;
+      for(auto c : tr.finite_cell_handles())
+        w = std::min(w, criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                          c->vertex(3)->point()));
+      return w;
+    };
+    // The vertices in the order of their points: the sequence depends on the seed only.
+    std::vector<Tr::Vertex_handle> vertices(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end());
+    std::sort(vertices.begin(), vertices.end(), [](Tr::Vertex_handle a, Tr::Vertex_handle b) {
+      return CGAL::compare_xyz(a->point(), b->point()) == CGAL::SMALLER;
+    });
+    double w = worst();
+    std::size_t moves = 0, boundary = 0;
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      for(auto v : vertices)
+      {
+        const auto r = ES::smooth_vertex(tr, v, criterion);
+        if(r.outcome == ES::VERTEX_ON_BOUNDARY) ++boundary;
+        if(!r.moved()) continue;
+        ++moves;
+        REQUIRE(r.quality_after > r.quality_before * 1.01);
+        const double now = worst();
+        REQUIRE(now >= w);
+        w = now;
+      }
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(exact_volume(tr) == volume);
+    }
+    REQUIRE(hull_points() == hull);
+    WARN("seed " << seed << ": " << moves << " moves, " << boundary << " refusals on the hull; worst dihedral sine " << w);
+    REQUIRE(moves > 0);
+    REQUIRE(boundary > 0);
+  }
 }

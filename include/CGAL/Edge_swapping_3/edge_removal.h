@@ -19,7 +19,7 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
-#include <CGAL/Edge_swapping_3/internal/removal_failures.h>
+#include <CGAL/Edge_swapping_3/internal/failed_attempts.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -118,13 +118,14 @@ struct Edge_star
   }
 
   /// A hash of the ring's edges (s_k, s_{k+1}), which fix the cells around
-  /// the edge: equal for the same star, whatever cell the ring starts at.
-  std::uint64_t signature() const
+  /// the edge, and of the positions: equal for the same star at the same
+  /// place, whatever cell the ring starts at.
+  std::uint64_t signature(const Tr& tr) const
   {
-    std::uint64_t h = mix_bits(std::uint64_t(address_of(a)) ^ (std::uint64_t(address_of(b)) << 1));
+    std::uint64_t h = mix_bits(vertex_signature(tr, a) ^ (vertex_signature(tr, b) << 1));
     for(std::size_t k = 0; k < ring.size(); ++k)
     {
-      std::uint64_t u = address_of(ring[k]), v = address_of(ring[(k + 1) % ring.size()]);
+      std::uint64_t u = vertex_signature(tr, ring[k]), v = vertex_signature(tr, ring[(k + 1) % ring.size()]);
       if(v < u) std::swap(u, v);
       h += mix_bits(u ^ mix_bits(v));
     }
@@ -263,7 +264,7 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
 
 /// The edges whose removal failed, with the signature of their star then.
 template <class Tr>
-using Edge_removal_failures = Removal_failures<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
+using Edge_removal_failures = Failed_attempts<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
 
 /// `remove_edge` with its settings spelled out; the new cells (finite and
 /// infinite) are appended to `created`. With `failures`, a star already
@@ -283,10 +284,10 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
   if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, created);
   const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
-  const std::uint64_t signature = star.signature();
+  const std::uint64_t signature = star.signature(tr);
   if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
   report = remove_edge_star(tr, star, criterion, constraints, created);
-  failures->record(key, signature, report);
+  failures->record(key, signature, report, report.removed());
   return report;
 }
 

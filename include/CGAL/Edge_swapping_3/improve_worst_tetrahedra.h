@@ -1,11 +1,13 @@
 // The quality driver: hill climbing on the worst tetrahedra first. A heap
 // holds the finite cells by the criterion's measure, worst on top; the worst
 // cell is taken and the operations are tried on it in a fixed order (edge
-// removal on its six edges, multi-face removal at its four facets, then the
-// flip of each of its four facets); the first that improves the worst
-// tetrahedron of its neighbourhood is made, and the cells whose operations
-// that changed go into the heap. The run ends when the heap is empty: then no
-// operation improves any cell, and a second run makes no change.
+// removal on its six edges, multi-face removal at its four facets, the flip
+// of each of its four facets, then, when asked, the smoothing of each of its
+// vertices); the first that improves the worst tetrahedron of its
+// neighbourhood is made, and the cells whose operations that changed go into
+// the heap. The run ends when the heap is empty (with smoothing, when a
+// sweep over every cell moves no vertex): then no operation improves any
+// cell, and a second run makes no change.
 
 #ifndef CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
 #define CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
@@ -18,6 +20,7 @@
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/vertex_smoothing.h>
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -34,7 +37,9 @@ enum Quality_operation : unsigned
   FLIPS = 1,              ///< 2-3, 3-2, 2-2 and 4-4 flips of the cell's facets
   EDGE_REMOVAL = 2,       ///< edge removal on the cell's edges
   MULTI_FACE_REMOVAL = 4, ///< multi-face removal at the cell's facets
-  ALL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL
+  SMOOTHING = 8,          ///< smoothing of the cell's interior vertices (moves points)
+  TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL, ///< every operation that keeps the points
+  ALL_OPERATIONS = TOPOLOGICAL_OPERATIONS | SMOOTHING
 };
 
 /// The report of `improve_worst_tetrahedra`.
@@ -46,13 +51,14 @@ struct Quality_report
   std::size_t edge_removals = 0;                ///< edges removed
   std::size_t face_removals = 0;                ///< multi-face removals made
   std::size_t faces_removed = 0;                ///< triangles they removed
+  std::size_t vertices_moved = 0;               ///< smoothing moves made
   std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
   double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells in the domain
   double seconds = 0;
 
   std::size_t number_of_operations() const
   {
-    std::size_t n = edge_removals + face_removals;
+    std::size_t n = edge_removals + face_removals + vertices_moved;
     for(std::size_t f : flips) n += f;
     return n;
   }
@@ -97,13 +103,15 @@ void keep_first_occurrences(std::vector<Handle>& items)
 /// `Worst_tetrahedron_criterion`: MinMax or MaxMin dihedral angle, an aspect
 /// ratio) by hill climbing, worst first: edge removal (`remove_edge`) on each
 /// edge of the worst cell, multi-face removal (`remove_faces`) at each of its
-/// facets, then the flip of each of its facets, the first that improves the
-/// worst tetrahedron where it acts. Every change improves
+/// facets, the flip of each of its facets, then, with `SMOOTHING`, the
+/// smoothing (`smooth_vertex`) of each of its vertices, the first that
+/// improves the worst tetrahedron where it acts. Every change improves
 /// that worst value beyond the criterion's relative tolerance, so the worst
 /// value over the mesh never gets worse and the run ends.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `ALL_OPERATIONS`) \cgalParamNEnd
+///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`: no
+///     point moves unless asked) \cgalParamNEnd
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
 ///     triangles multi-face removal explores, default 10 \cgalParamNEnd
@@ -119,7 +127,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   typedef internal::Worst_cell_entry<Tr> Entry;
   CGAL_precondition(tr.dimension() == 3);
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
-  const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(ALL_OPERATIONS));
+  const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const std::size_t limit = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                              10 * tr.number_of_finite_cells());
@@ -210,14 +218,28 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   std::vector<Cell_handle> created;
   internal::Edge_removal_failures<Tr> failures;
   internal::Multi_face_removal_failures<Tr> face_failures;
+  // The vertices whose smoothing failed since their star last changed (a
+  // cell around them made or removed, or a vertex of their star moved).
+  internal::Flat_hash_set<typename Tr::Vertex_handle, internal::Handle_hash> settled;
+  std::vector<Cell_handle> star;
   // With both removals, a flip of a facet of the cell is never needed: the
   // 3-2, 4-4 and 2-2 flips are edge removals of the cell's edges, the 2-3 flip
   // the one-triangle disk of multi-face removal, and either removal takes its
   // best option, which beats the old cells whenever the flip would.
   const bool flips = (operations & FLIPS) &&
                      (operations & (EDGE_REMOVAL | MULTI_FACE_REMOVAL)) != (EDGE_REMOVAL | MULTI_FACE_REMOVAL);
-  while(!heap.empty())
+  // A smoothing move requeues only the cells around the vertex, so an
+  // empty heap is checked by a sweep over every cell; the run ends when a
+  // sweep changes nothing.
+  std::size_t moves_at_sweep = 0;
+  for(;;)
   {
+    if(heap.empty())
+    {
+      if(report.vertices_moved == moves_at_sweep) break;
+      moves_at_sweep = report.vertices_moved;
+      for(Cell_handle c : tr.finite_cell_handles()) push(c);
+    }
     if(report.number_of_operations() >= limit)
     {
       report.ending = CYCLE_LIMIT_REACHED;
@@ -229,7 +251,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(!tr.is_cell(entry.vertices[0], entry.vertices[1], entry.vertices[2], entry.vertices[3], c)) continue;
     ++report.visits;
     created.clear();
-    bool improved = false;
+    bool improved = false, moved = false;
     if(operations & EDGE_REMOVAL)
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
@@ -263,7 +285,29 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         ++report.flips[conf.flip_kind()];
         improved = true;
       }
-    if(improved) push_around(created);
+    if(operations & SMOOTHING)
+      for(int i = 0; i < 4 && !improved; ++i)
+      {
+        if(settled.contains(c->vertex(i))) continue;
+        star.clear();
+        if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints, 20, star).moved())
+        {
+          created = star;
+          moved = true;
+          ++report.vertices_moved;
+          improved = true;
+        }
+        else
+          settled.insert(c->vertex(i));
+      }
+    if(improved)
+    {
+      if(!settled.empty())
+        for(Cell_handle n : created)
+          for(int i = 0; i < 4; ++i) settled.erase(n->vertex(i));
+      if(moved) for(Cell_handle n : created) push(n);
+      else push_around(created);
+    }
     else ++report.stuck;
   }
   report.worst_after = worst();

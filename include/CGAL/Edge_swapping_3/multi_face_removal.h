@@ -21,7 +21,7 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
-#include <CGAL/Edge_swapping_3/internal/removal_failures.h>
+#include <CGAL/Edge_swapping_3/internal/failed_attempts.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -97,8 +97,9 @@ public:
     for(int k = 0; k < 3; ++k) explore(0, k);
   }
 
-  /// A hash of the cells the exploration read (their vertices): the same
-  /// cells give the same tree, and the same removal.
+  /// A hash of the cells the exploration read (their vertices and their
+  /// positions): the same cells at the same place give the same tree, and
+  /// the same removal.
   std::uint64_t signature() const { return signature_; }
 
   /// Finds the best disk (dynamic programming over the tree).
@@ -121,7 +122,7 @@ private:
   void read(Cell_handle c)
   {
     std::array<std::uint64_t, 4> v;
-    for(int i = 0; i < 4; ++i) v[i] = std::uint64_t(address_of(c->vertex(i)));
+    for(int i = 0; i < 4; ++i) v[i] = vertex_signature(tr_, c->vertex(i));
     std::sort(v.begin(), v.end());
     std::uint64_t h = 0;
     for(std::uint64_t x : v) h = mix_bits(h ^ x);
@@ -205,7 +206,7 @@ private:
 /// The facets where multi-face removal failed, with the signature of the
 /// cells it read then.
 template <class Tr>
-using Multi_face_removal_failures = Removal_failures<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
+using Multi_face_removal_failures = Failed_attempts<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
 
 /// The best disk of an explored sandwich, made when it improves.
 template <class Tr, class Sandwich, class Score, class Constraints>
@@ -308,7 +309,7 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   if(failures != nullptr)
     if(const Multi_face_removal_report* known = failures->find(key, sandwich.signature())) return *known;
   report = decide_removal(tr, sandwich, score, larger_is_worse, criterion.relative_tolerance, constraints, created);
-  if(failures != nullptr) failures->record(key, sandwich.signature(), report);
+  if(failures != nullptr) failures->record(key, sandwich.signature(), report, report.removed());
   return report;
 }
 

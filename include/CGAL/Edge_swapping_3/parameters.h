@@ -64,7 +64,7 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(helper_rounds_before_rebuild)
 /// considers (default 10).
 CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_ring_size)
 /// `unsigned`: the operations of `improve_worst_tetrahedra`, bits of
-/// `Quality_operation` (default `ALL_OPERATIONS`).
+/// `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(operations)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
