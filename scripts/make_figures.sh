@@ -20,7 +20,7 @@ $E optimize "$D/cube.node" --start placing --criterion delaunay -o "$D/plain.ele
 $E optimize "$D/cube.node" --start placing --helper -o "$D/helper.ele" --history "$D/helper.csv" --seed 1
 # Fig. 10: dihedral angles of the Delaunay mesh before and after MinMax.
 $E optimize "$D/cube.node" --start delaunay --criterion delaunay -o "$D/del.ele"
-$E optimize "$D/del.ele" --criterion minmax-dihedral -o "$D/minmax.ele" --history "$D/minmax.csv"
+$E optimize "$D/del.ele" --criterion minmax-dihedral --operations paper-flips -o "$D/minmax.ele" --history "$D/minmax.csv"
 $E stats "$D/del.ele" --json "$D/del.json" > /dev/null
 $E stats "$D/minmax.ele" --json "$D/minmax.json" > /dev/null
 # Fig. 13: worst aspect ratio and sites per round.

@@ -205,7 +205,9 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + " -o " + w.path("out.obj"), "optimize " + in + out + " --max-cycles -3",
        "optimize " + w.path("missing.node") + out, "optimize " + w.path("cube.txt") + out, "frobnicate",
        "check " + w.path("missing.ele"), "check " + in,
-       "optimize " + in + out + " --operations flips", "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing",
+       "optimize " + in + out + " --operations flips",
+       "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing,paper-flips",
+       "optimize " + in + out + " --criterion dihedral-sine --history " + w.path("h.csv"),
        "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
        "optimize " + in + out + " --criterion min-edges --operations edge-removal",
        "optimize " + in + out + " --criterion minmax-dihedral --operations multi-face",
@@ -308,26 +310,40 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
 {
   Workdir w;
   write_random_node(w, "cube.node", 300, 13);
+  // No --operations: the default, all of them.
   const std::pair<std::string, std::string> runs[] = {{"minmax-dihedral", "flips,edge-removal"},
                                                        {"radius-ratio", "multi-face-removal"},
-                                                       {"maxmin-dihedral", "all"}};
+                                                       {"maxmin-dihedral", "topological"},
+                                                       {"dihedral-sine", "smoothing"},
+                                                       {"aspect-ratio", ""}};
   for(const auto& [criterion, operations] : runs)
   {
     INFO(criterion << " " << operations);
     const Run r = w.run("optimize " + w.path("cube.node") + " --start delaunay --criterion " + criterion +
-                        " --operations " + operations + " -o " + w.path("out.ele") + " --stats " + w.path("s.json"));
+                        (operations.empty() ? "" : " --operations " + operations) + " -o " + w.path("out.ele") +
+                        " --stats " + w.path("s.json"));
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    REQUIRE(r.out.find("worst first (" + operations + "): converged") != std::string::npos);
+    REQUIRE(r.out.find("worst first (" + (operations.empty() ? "all" : operations) + "): converged") != std::string::npos);
+    const bool smoothing = operations.empty() || operations == "smoothing";
+    REQUIRE((r.out.find("smoothing moves 0;") == std::string::npos) == smoothing);
     const std::string stats = Workdir::slurp(w.path("s.json"));
     REQUIRE(stats.find("\"edge_removals\"") != std::string::npos);
     REQUIRE(stats.find("\"multi_face_removals\"") != std::string::npos);
-    if(operations != "flips,edge-removal") REQUIRE(stats.find("\"multi_face_removals\": 0,") == std::string::npos);
+    const bool faces = operations.empty() || operations == "multi-face-removal" || operations == "topological";
+    REQUIRE((stats.find("\"multi_face_removals\": 0,") == std::string::npos) == faces);
     REQUIRE(stats.find("\"driver\": \"worst first\"") != std::string::npos);
     const Run c = w.run("check " + w.path("out.ele"));
     REQUIRE(c.exit_code == 0);
     REQUIRE(c.out.find("valid triangulation") != std::string::npos);
   }
+  // The paper's driver, with its rounds.
+  const Run r = w.run("optimize " + w.path("cube.node") + " --criterion minmax-dihedral --operations paper-flips -o " +
+                      w.path("paper.ele") + " --history " + w.path("h.csv"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("minmax-dihedral: converged after") != std::string::npos);
+  REQUIRE(Workdir::slurp(w.path("h.csv")).rfind("cycle,swaps_2_3,", 0) == 0);
 }
 
 TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[program]")

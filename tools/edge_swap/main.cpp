@@ -25,10 +25,12 @@ int main(int argc, char** argv)
   optimize->add_option("INPUT", opt.input, "TetGen .node (points) or .ele (mesh, .node beside it)")->required();
   optimize->add_option("-o,--output", opt.output, "output Y.ele (Y.node is written beside it)")->required();
   optimize->add_option("--criterion", opt.criterion,
-                       "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio|radius-ratio|dihedral-sine|volume-length");
+                       "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio (circumradius/inradius)|"
+                       "edge-ratio (longest/shortest edge)|radius-ratio|dihedral-sine|volume-length");
   optimize->add_option("--operations", opt.operations,
-                       "flips, edge-removal, multi-face-removal (comma-separated) or all: the worst-first driver with these "
-                       "operations (quality criteria)");
+                       "quality criteria: the worst-first driver's operations, comma-separated: flips, edge-removal, "
+                       "multi-face-removal, smoothing (moves interior points), topological (the first three), all "
+                       "(default); or paper-flips: the paper's driver (rounds over every facet)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");
   optimize->add_option("--order", opt.order, "face order: storage or random (default: storage; random with --helper)");

@@ -235,6 +235,10 @@ inline void add_mesh_files(Output_files& files, const std::string& path, const T
   require_output_format(path);
   auto coordinates = std::make_shared<std::vector<std::array<double, 3>>>();
   for(const auto& p : in.points) coordinates->push_back({p.x(), p.y(), p.z()});
+  // Where the points are now: smoothing moves interior ones.
+  for(auto v : tr.finite_vertex_handles())
+    if(v->info() < coordinates->size())
+      (*coordinates)[v->info()] = {v->point().x(), v->point().y(), v->point().z()};
   auto cells = std::make_shared<std::vector<std::array<std::size_t, 4>>>();
   std::vector<int> subdomain;
   cells->reserve(tr.number_of_finite_cells());

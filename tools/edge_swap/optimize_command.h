@@ -18,7 +18,7 @@ struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order;
   std::string perturb = "cgal", history, stats, schedule = "queue";
-  std::string operations; ///< empty: the flip driver; else the worst-first driver with these
+  std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   bool helper = false, start_given = false, paper = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
@@ -57,12 +57,16 @@ auto with_criterion(const std::string& name, ES::Perturbation perturbation, Run 
   if(name == "minmax-dihedral") return run(ES::Min_max_dihedral_angle_criterion());
   if(name == "maxmin-dihedral") return run(ES::Max_min_dihedral_angle_criterion());
   if(name == "min-edges") return run(ES::Min_edges_criterion());
-  if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion());
+  if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion(ES::RADIUS_RATIO));
+  if(name == "edge-ratio") return run(ES::Aspect_ratio_criterion(ES::EDGE_LENGTH_RATIO));
   if(name == "radius-ratio") return run(ES::Max_min_radius_ratio_criterion());
   if(name == "dihedral-sine") return run(ES::Max_min_dihedral_sine_criterion());
   if(name == "volume-length") return run(ES::Max_min_volume_length_criterion());
   throw Usage_error("unknown --criterion '" + name + "'");
 }
+
+/// `--operations paper-flips`: the flip driver of `swap_edges` (rounds over every facet).
+constexpr unsigned paper_flips = 1u << 30;
 
 /// The bits of `--operations` (a comma-separated list).
 inline unsigned quality_operations(const std::string& list)
@@ -76,13 +80,23 @@ inline unsigned quality_operations(const std::string& list)
     if(name == "flips") bits |= ES::FLIPS;
     else if(name == "edge-removal") bits |= ES::EDGE_REMOVAL;
     else if(name == "multi-face-removal") bits |= ES::MULTI_FACE_REMOVAL;
+    else if(name == "smoothing") bits |= ES::SMOOTHING;
+    else if(name == "topological") bits |= ES::TOPOLOGICAL_OPERATIONS;
     else if(name == "all") bits |= ES::ALL_OPERATIONS;
+    else if(name == "paper-flips") bits |= paper_flips;
     else
-      throw Usage_error("--operations: unknown operation '" + name + "' (flips, edge-removal, multi-face-removal, all)");
+      throw Usage_error("--operations: unknown operation '" + name +
+                        "' (flips, edge-removal, multi-face-removal, smoothing, topological, all, paper-flips)");
     begin = end + 1;
   }
+  if((bits & paper_flips) && bits != paper_flips)
+    throw Usage_error("--operations paper-flips is the paper's driver alone; it cannot go with other operations");
   return bits;
 }
+
+/// The operations of `optimize` with a quality criterion when `--operations`
+/// is not given: the best combination measured (doc/Edge_swapping_3/benchmarks.md).
+constexpr const char* default_quality_operations = "all";
 
 /// The worst-first driver (`--operations`) on `tr`: runs, writes, reports.
 inline int run_worst_first(const Optimize_options& o, const Input& in, Triangulation& tr, unsigned operations)
@@ -109,6 +123,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"edge_removals", report.edge_removals},
                           {"multi_face_removals", report.face_removals},
                           {"faces_removed", report.faces_removed},
+                          {"smoothing_moves", report.vertices_moved},
                           {"flips", {{"2-3", report.flips[0]}, {"3-2", report.flips[1]}, {"2-2", report.flips[2]},
                                      {"4-4", report.flips[3]}}},
                           {"visits", report.visits},
@@ -123,7 +138,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
             << "; edge removals " << report.edge_removals << ", multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
-            << f[2] << ", 4-4 " << f[3] << "; worst " << report.worst_before << " -> " << report.worst_after
+            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.vertices_moved << "; worst " << report.worst_before << " -> " << report.worst_after
             << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
   return 0;
 }
@@ -143,15 +158,20 @@ inline int run_optimize(const Optimize_options& o)
   if(o.paper && o.criterion != "delaunay")
     throw Usage_error("--paper turns off the Delaunay repair; it cannot go with --criterion " + o.criterion);
   if(o.start.rfind("scramble:", 0) == 0) whole_number(o.start.substr(9), "--start scramble:K");
-  const unsigned operations = o.operations.empty() ? 0u : quality_operations(o.operations);
-  if(operations != 0)
-  {
-    if(o.criterion == "delaunay" || o.criterion == "min-edges")
-      throw Usage_error("--operations drives a quality criterion (minmax-dihedral, maxmin-dihedral, aspect-ratio, "
-                        "radius-ratio, dihedral-sine, volume-length), not --criterion " + o.criterion);
-    if(!o.history.empty()) throw Usage_error("--history records rounds, which --operations (worst first) has not");
-    with_criterion(o.criterion, ES::CGAL_PERTURBATION, [](const auto&) { return 0; }); // an unknown name fails here
-  }
+  // Delaunay and min-edges run the flip driver; a quality criterion runs the
+  // worst-first driver with the default operations unless told otherwise.
+  const bool quality_criterion = o.criterion != "delaunay" && o.criterion != "min-edges";
+  if(!o.operations.empty() && !quality_criterion)
+    throw Usage_error("--operations drives a quality criterion (minmax-dihedral, maxmin-dihedral, aspect-ratio, "
+                      "edge-ratio, radius-ratio, dihedral-sine, volume-length), not --criterion " + o.criterion);
+  with_criterion(o.criterion, ES::CGAL_PERTURBATION, [](const auto&) { return 0; }); // an unknown name fails here
+  Optimize_options options = o;
+  if(quality_criterion && options.operations.empty()) options.operations = default_quality_operations;
+  unsigned operations = quality_criterion ? quality_operations(options.operations) : 0u;
+  if(operations == paper_flips) operations = 0;
+  if(operations != 0 && !o.history.empty())
+    throw Usage_error("--history records rounds, which the worst-first driver (--operations " + options.operations +
+                      ") has not; --operations paper-flips has them");
 
   Input in = read_input(o.input);
   Triangulation tr;
@@ -168,7 +188,7 @@ inline int run_optimize(const Optimize_options& o)
     mark_point_set_domain(tr);
   }
 
-  if(operations != 0) return run_worst_first(o, in, tr, operations);
+  if(operations != 0) return run_worst_first(options, in, tr, operations);
 
   // The full statistics (every dihedral angle) only when --stats asks for them.
   const bool with_statistics = !o.stats.empty();

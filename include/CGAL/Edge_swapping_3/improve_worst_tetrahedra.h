@@ -115,7 +115,8 @@ void keep_first_occurrences(std::vector<Handle>& items)
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
 ///     triangles multi-face removal explores, default 10 \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations} the most operations made, default 10 times the number of cells \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
+///     times the number of cells \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
@@ -130,7 +131,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const std::size_t limit = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                             10 * tr.number_of_finite_cells());
+                                             100 * tr.number_of_finite_cells());
   CGAL::Real_timer timer;
   timer.start();
 
