@@ -23,6 +23,7 @@ enum delaunay_repair_t { delaunay_repair };
 enum helper_rounds_before_rebuild_t { helper_rounds_before_rebuild };
 enum maximum_ring_size_t { maximum_ring_size };
 enum operations_t { operations };
+enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
 
 } // namespace internal_np
 
@@ -66,6 +67,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_ring_size)
 /// `unsigned`: the operations of `improve_worst_tetrahedra`, bits of
 /// `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(operations)
+/// `int`: how many times smoothing may move one vertex in a run of
+/// `improve_worst_tetrahedra` (default 20).
+CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_moves_per_vertex)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 
