@@ -5,9 +5,10 @@
 // placing triangulation of 8,000 random points (measured on the cells with
 // no vertex on the fixed hull). Rows: the input, the flip driver
 // (`swap_edges`, MinMax), the worst-first driver (`improve_worst_tetrahedra`)
-// for MinMax with each set of operations, then with all three for MaxMin,
-// the radius ratio, the dihedral sine and the volume-length ratio; then
-// TetGen's optimizer and CGAL's remeshing steps. Columns as in issue 11's
+// for MinMax with each set of operations, then with all three, and with
+// smoothing too, for MaxMin, the radius ratio, the dihedral sine and the
+// volume-length ratio; then TetGen's optimizer and CGAL's remeshing steps.
+// Columns as in issue 11's
 // table: smallest and largest dihedral angle, cells below 10 and above 165
 // and 175 degrees, the 1st percentile of the radius ratio 3 r / R (1 for a
 // regular tetrahedron), then the time (the optimizer alone) and the
@@ -245,12 +246,14 @@ int main(int argc, char** argv)
   quality_peers::Cell_mesh two_spheres_cells{two_spheres.points, two_spheres.cells, two_spheres.cell_references};
   if(wanted("two-spheres"))
   {
-  std::printf("\nTwo-spheres domain mesh, flow region (subdomain 1); boundaries and subdomains kept\n");
-  std::printf("(%zu boundary triangles in the file, %zu facets between subdomains or on the hull)\n",
-              two_spheres.triangles.size(), quality_peers::boundary_triangles(two_spheres_cells).size());
-  rows([&](Triangulation& tr) { edge_swap::build_mesh(tr, two_spheres); }, ES::Domain_constraints(),
-       [](const Triangulation&) { return Cell_filter([](Triangulation::Cell_handle c) { return c->info().subdomain == 1; }); },
-       two_spheres_cells);
+    std::printf("\nTwo-spheres domain mesh, flow region (subdomain 1); boundaries and subdomains kept\n");
+    std::printf("(%zu boundary triangles in the file, %zu facets between subdomains or on the hull)\n",
+                two_spheres.triangles.size(), quality_peers::boundary_triangles(two_spheres_cells).size());
+    rows([&](Triangulation& tr) { edge_swap::build_mesh(tr, two_spheres); }, ES::Domain_constraints(),
+         [](const Triangulation&) {
+           return Cell_filter([](Triangulation::Cell_handle c) { return c->info().subdomain == 1; });
+         },
+         two_spheres_cells);
   }
 
   const auto points = random_points(8000);
