@@ -93,7 +93,7 @@ std::string operations_of(const ES::Quality_report& r)
   return std::to_string(r.edge_removals) + " edge removals, " + std::to_string(r.face_removals) + " multi-face (" +
          std::to_string(r.faces_removed) + " faces), " + std::to_string(r.flips[ES::FLIP_2_3]) + " 2-3, " +
          std::to_string(r.flips[ES::FLIP_3_2]) + " 3-2, " + std::to_string(r.flips[ES::FLIP_4_4] + r.flips[ES::FLIP_2_2]) +
-         " 4-4/2-2, " + std::to_string(r.vertices_moved) + " smoothing moves";
+         " 4-4/2-2, " + std::to_string(r.smoothing_moves) + " smoothing moves";
 }
 
 // A peer's result, rebuilt as our triangulation (which validates it) and

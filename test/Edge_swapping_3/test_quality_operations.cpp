@@ -122,6 +122,17 @@ double worst_largest_angle(const T& tr)
 }
 
 /// The cells with a dihedral angle above 165 degrees (MinMax) or below 10 (MaxMin).
+/// The smallest value of a larger-is-better criterion's measure over the finite cells.
+template <class T, class Criterion>
+double smallest_measure(const T& tr, const Criterion& criterion)
+{
+  double w = HUGE_VAL;
+  for(auto c : tr.finite_cell_handles())
+    w = std::min(w, criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                      c->vertex(3)->point()));
+  return w;
+}
+
 template <class T>
 std::size_t poor_cells(const T& tr, bool largest)
 {
@@ -664,8 +675,8 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
                  face_removals = (operations & ES::MULTI_FACE_REMOVAL) != 0;
       REQUIRE((removals || r.edge_removals == 0));
       REQUIRE((face_removals || r.face_removals == 0));
-      REQUIRE(((operations & ES::SMOOTHING) || r.vertices_moved == 0));
-      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals + r.vertices_moved));
+      REQUIRE(((operations & ES::SMOOTHING) || r.smoothing_moves == 0));
+      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals + r.smoothing_moves));
       const double worst_now = minmax ? worst_largest_angle(tr) : worst_smallest_angle(tr);
       REQUIRE(r.worst_after == worst_now);
       // The worst cells of a random point set are slivers on the hull, which
@@ -680,14 +691,14 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
                          << " by " << r.edge_removals << " edge removals, " << r.face_removals
-                         << " multi-face removals, " << r.vertices_moved << " smoothing moves and "
-                         << r.number_of_operations() - r.edge_removals - r.face_removals - r.vertices_moved
+                         << " multi-face removals, " << r.smoothing_moves << " smoothing moves and "
+                         << r.number_of_operations() - r.edge_removals - r.face_removals - r.smoothing_moves
                          << " flips; " << r.visits << " visits, "
                          << r.stuck << " stuck");
       // Converged: no cell has an operation that helps, so a second run
       // changes nothing (with smoothing, no topological operation: a vertex
       // that made its 20 moves may move again in a new run).
-      REQUIRE(r.vertices_moved <= 20 * tr.number_of_vertices());
+      REQUIRE(r.smoothing_moves <= 20 * tr.number_of_vertices());
       const auto cells = cell_set(tr);
       const auto again_np = ES::parameters::operations(operations & ES::TOPOLOGICAL_OPERATIONS);
       const auto again = minmax ? ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), again_np)
@@ -770,11 +781,11 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     REQUIRE(constrained_facets() == facets);
     for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
     WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.face_removals << " multi-face removals, "
-                         << r.vertices_moved << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
+                         << r.smoothing_moves << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
                          << r.worst_after);
     if(operations & ES::SMOOTHING)
     {
-      REQUIRE(r.vertices_moved > 0);
+      REQUIRE(r.smoothing_moves > 0);
       const auto cells = cell_set(tr);
       REQUIRE(ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np).number_of_operations() == 0);
       REQUIRE(cell_set(tr) == cells);
@@ -832,13 +843,7 @@ TEST_CASE("The quality driver with each measure - never worse - converged - vali
     Tr tr;
     ES::insert_delaunay(tr, points);
     const auto volume = exact_volume(tr);
-    auto worst = [&]() {
-      double w = HUGE_VAL;
-      for(auto c : tr.finite_cell_handles())
-        w = std::min(w, criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                          c->vertex(3)->point()));
-      return w;
-    };
+    auto worst = [&]() { return smallest_measure(tr, criterion); };
     const double before = worst();
     const auto r = ES::improve_worst_tetrahedra(tr, criterion);
     INFO(name);
@@ -959,13 +964,7 @@ TEST_CASE("Random sequences of smoothing keep validity - exact volume - the hull
     };
     const auto hull = hull_points();
     const ES::Max_min_dihedral_sine_criterion criterion;
-    auto worst = [&]() {
-      double w = HUGE_VAL;
-      for(auto c : tr.finite_cell_handles())
-        w = std::min(w, criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                          c->vertex(3)->point()));
-      return w;
-    };
+    auto worst = [&]() { return smallest_measure(tr, criterion); };
     // The vertices in the order of their points: the sequence depends on the seed only.
     std::vector<Tr::Vertex_handle> vertices(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end());
     std::sort(vertices.begin(), vertices.end(), [](Tr::Vertex_handle a, Tr::Vertex_handle b) {

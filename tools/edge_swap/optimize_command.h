@@ -123,7 +123,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"edge_removals", report.edge_removals},
                           {"multi_face_removals", report.face_removals},
                           {"faces_removed", report.faces_removed},
-                          {"smoothing_moves", report.vertices_moved},
+                          {"smoothing_moves", report.smoothing_moves},
                           {"flips", {{"2-3", report.flips[0]}, {"3-2", report.flips[1]}, {"2-2", report.flips[2]},
                                      {"4-4", report.flips[3]}}},
                           {"visits", report.visits},
@@ -138,7 +138,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
             << "; edge removals " << report.edge_removals << ", multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
-            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.vertices_moved << "; worst " << report.worst_before << " -> " << report.worst_after
+            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst " << report.worst_before << " -> " << report.worst_after
             << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
   return 0;
 }

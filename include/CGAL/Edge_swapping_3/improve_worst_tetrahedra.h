@@ -52,14 +52,14 @@ struct Quality_report
   std::size_t edge_removals = 0;                ///< edges removed
   std::size_t face_removals = 0;                ///< multi-face removals made
   std::size_t faces_removed = 0;                ///< triangles they removed
-  std::size_t vertices_moved = 0;               ///< smoothing moves made
+  std::size_t smoothing_moves = 0;              ///< smoothing moves made (a vertex may move more than once)
   std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
   double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells in the domain
   double seconds = 0;
 
   std::size_t number_of_operations() const
   {
-    std::size_t n = edge_removals + face_removals + vertices_moved;
+    std::size_t n = edge_removals + face_removals + smoothing_moves;
     for(std::size_t f : flips) n += f;
     return n;
   }
@@ -250,8 +250,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   {
     if(heap.empty())
     {
-      if(report.vertices_moved == moves_at_sweep) break;
-      moves_at_sweep = report.vertices_moved;
+      if(report.smoothing_moves == moves_at_sweep) break;
+      moves_at_sweep = report.smoothing_moves;
       for(Cell_handle c : tr.finite_cell_handles()) push(c);
     }
     if(report.number_of_operations() >= limit)
@@ -308,7 +308,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         {
           created = star;
           moved = true;
-          ++report.vertices_moved;
+          ++report.smoothing_moves;
           improved = true;
           ++moves_of[c->vertex(i)];
         }
