@@ -208,6 +208,8 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --operations flips",
        "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing,paper-flips",
        "optimize " + in + out + " --criterion dihedral-sine --history " + w.path("h.csv"),
+       "optimize " + in + out + " --criterion maxmin-dihedral --order random",
+       "optimize " + in + out + " --criterion radius-ratio --operations topological --schedule cycles",
        "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
        "optimize " + in + out + " --criterion min-edges --operations edge-removal",
        "optimize " + in + out + " --criterion minmax-dihedral --operations multi-face",

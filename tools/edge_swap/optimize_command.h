@@ -138,8 +138,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
             << "; edge removals " << report.edge_removals << ", multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
-            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst " << report.worst_before << " -> " << report.worst_after
-            << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
+            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst "
+            << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
   return 0;
 }
 
@@ -172,6 +172,9 @@ inline int run_optimize(const Optimize_options& o)
   if(operations != 0 && !o.history.empty())
     throw Usage_error("--history records rounds, which the worst-first driver (--operations " + options.operations +
                       ") has not; --operations paper-flips has them");
+  if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
+    throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
+                      "worst-first driver (--operations " + options.operations + ")");
 
   Input in = read_input(o.input);
   Triangulation tr;
