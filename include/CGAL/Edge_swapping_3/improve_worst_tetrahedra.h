@@ -304,7 +304,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       {
         if(!may_move(c->vertex(i))) continue;
         star.clear();
-        if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints, 20, star).moved())
+        if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints,
+                                   internal::default_smoothing_steps, star).moved())
         {
           created = star;
           moved = true;

@@ -63,6 +63,9 @@ namespace internal {
 /// The least relative improvement of the worst value for which a vertex moves.
 constexpr double smoothing_gain = 1e-2;
 
+/// The ascent steps after the smart Laplacian, unless told otherwise.
+constexpr int default_smoothing_steps = 20;
+
 /// The star of a vertex, with the objective at a trial position.
 template <class Tr, class Measure, bool larger_is_worse>
 class Vertex_star
@@ -297,7 +300,8 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
-  const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 20);
+  const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                     internal::default_smoothing_steps);
   std::vector<typename Tr::Cell_handle> star;
   return internal::smooth_vertex(tr, v, criterion, constraints, steps, star);
 }
