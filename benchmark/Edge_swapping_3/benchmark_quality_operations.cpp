@@ -15,7 +15,10 @@
 // operations. Each output is validated (rebuilt, orientations checked) and
 // its boundary triangles compared with the input's.
 //
-//   benchmark_quality_operations [two-spheres|delaunay|placing]   (default: all three inputs)
+//   benchmark_quality_operations [two-spheres|delaunay|placing [ROW]]
+//
+// (default: all three inputs; with ROW, only the rows whose name contains
+// it, the input's row always).
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>
@@ -37,6 +40,10 @@ typedef edge_swap::Triangulation Triangulation;
 namespace {
 
 typedef std::function<bool(Triangulation::Cell_handle)> Cell_filter;
+
+// The rows asked for (a part of their name; empty: every row).
+std::string selected_rows;
+bool selected(const std::string& row) { return row.find(selected_rows) != std::string::npos; }
 
 struct Quality_row
 {
@@ -90,7 +97,8 @@ std::size_t moved_vertices(const Triangulation& tr, const quality_peers::Cell_me
 
 std::string operations_of(const ES::Quality_report& r)
 {
-  return std::to_string(r.edge_removals) + " edge removals, " + std::to_string(r.face_removals) + " multi-face (" +
+  return std::to_string(r.edge_removals) + " edge removals, " + std::to_string(r.two_step_removals) +
+         " two-step, " + std::to_string(r.face_removals) + " multi-face (" +
          std::to_string(r.faces_removed) + " faces), " + std::to_string(r.flips[ES::FLIP_2_3]) + " 2-3, " +
          std::to_string(r.flips[ES::FLIP_3_2]) + " 3-2, " + std::to_string(r.flips[ES::FLIP_4_4] + r.flips[ES::FLIP_2_2]) +
          " 4-4/2-2, " + std::to_string(r.smoothing_moves) + " smoothing moves";
@@ -98,9 +106,11 @@ std::string operations_of(const ES::Quality_report& r)
 
 // A peer's result, rebuilt as our triangulation (which validates it) and
 // measured by the same code; it must keep the input's boundary triangles.
-void peer_row(const char* name, const quality_peers::Peer_result& r, const quality_peers::Cell_mesh& input,
-              const std::function<Cell_filter(const Triangulation&)>& counted)
+void peer_row(const char* name, const std::function<quality_peers::Peer_result()>& run,
+              const quality_peers::Cell_mesh& input, const std::function<Cell_filter(const Triangulation&)>& counted)
 {
+  if(!selected(name)) return;
+  const quality_peers::Peer_result r = run();
   if(!r.error.empty())
   {
     std::printf("%-40s failed: %s\n", name, r.error.c_str());
@@ -135,6 +145,7 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
     make(tr);
     print("input", quality(tr, counted(tr)), 0, "");
   }
+  if(selected("swap_edges MinMax (flips)"))
   {
     Triangulation tr;
     make(tr);
@@ -147,11 +158,13 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
       {"flips", ES::FLIPS},
       {"edge removal", ES::EDGE_REMOVAL},
       {"multi-face removal", ES::MULTI_FACE_REMOVAL},
+      {"edge removal, one or two steps", ES::EDGE_REMOVAL | ES::TWO_STEP_EDGE_REMOVAL},
       {"edge + multi-face removal", ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL},
-      {"all three", ES::TOPOLOGICAL_OPERATIONS},
-      {"all three + smoothing", ES::ALL_OPERATIONS}};
+      {"topological", ES::TOPOLOGICAL_OPERATIONS},
+      {"topological + smoothing", ES::ALL_OPERATIONS}};
   for(const auto& [name, operations] : variants)
   {
+    if(!selected(std::string("worst first MinMax, ") + name)) continue;
     Triangulation tr;
     make(tr);
     const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
@@ -159,16 +172,17 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
     print((std::string("worst first MinMax, ") + name).c_str(), quality(tr, counted(tr)), r.seconds,
           operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
   }
-  // The other measures, with all three operations, then with smoothing.
+  // The other measures, with the topological operations, then with smoothing.
   auto other = [&](const auto& criterion, const char* measure) {
     for(const unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
     {
+      const std::string row = std::string("worst first ") + measure +
+                              (operations == ES::ALL_OPERATIONS ? ", topological + smoothing" : ", topological");
+      if(!selected(row)) continue;
       Triangulation tr;
       make(tr);
       const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
       const auto r = ES::improve_worst_tetrahedra(tr, criterion, np);
-      const std::string row = std::string("worst first ") + measure +
-                              (operations == ES::ALL_OPERATIONS ? ", all three + smoothing" : ", all three");
       print(row.c_str(), quality(tr, counted(tr)), r.seconds,
             operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
     }
@@ -180,13 +194,16 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
 
   // The peers. TetGen aims at 140 degrees, as in issue 11's table.
 #ifdef EDGE_SWAPPING_3_WITH_TETGEN
-  peer_row("TetGen 1.5 flips (140 deg)", quality_peers::tetgen_optimizer(input, 1, 140), input, counted);
-  peer_row("TetGen 1.5 flips + smoothing", quality_peers::tetgen_optimizer(input, 3, 140), input, counted);
+  peer_row("TetGen 1.5 flips (140 deg)", [&] { return quality_peers::tetgen_optimizer(input, 1, 140); }, input, counted);
+  peer_row("TetGen 1.5 flips + smoothing", [&] { return quality_peers::tetgen_optimizer(input, 3, 140); }, input,
+           counted);
 #else
   std::printf("TetGen: libtet was not found when this benchmark was built\n");
 #endif
-  peer_row("CGAL remeshing flips (5 steps)", quality_peers::cgal_remeshing(input, false, 5), input, counted);
-  peer_row("CGAL flips + smoothing (5 steps)", quality_peers::cgal_remeshing(input, true, 5), input, counted);
+  peer_row("CGAL remeshing flips (5 steps)", [&] { return quality_peers::cgal_remeshing(input, false, 5); }, input,
+           counted);
+  peer_row("CGAL flips + smoothing (5 steps)", [&] { return quality_peers::cgal_remeshing(input, true, 5); }, input,
+           counted);
 }
 
 /// The cells of our triangulation, with its own points numbered.
@@ -230,6 +247,7 @@ int main(int argc, char** argv)
 {
   start_benchmark(argv);
   const std::string only = argc > 1 ? argv[1] : "";
+  if(argc > 2) selected_rows = argv[2];
   auto wanted = [&](const char* input) { return only.empty() || only == input; };
   if(!only.empty() && !wanted("two-spheres") && !wanted("delaunay") && !wanted("placing"))
   {

@@ -13,6 +13,7 @@
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
 #include <cmath>
 #include <functional>
@@ -463,6 +464,109 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
   }
 }
 
+TEST_CASE("Two-step edge removal - where no ring triangulation helps, an edge of the star goes first",
+          "[edge removal][two-step]")
+{
+  for(unsigned seed : {5u, 6u})
+  {
+    INFO("seed " << seed);
+    // Points on the cube's faces too: edges on the flat hull, and rings
+    // with the infinite vertex.
+    auto points = random_in_cube(300, seed);
+    CGAL::Random random(seed);
+    for(int k = 0; k < 80; ++k)
+    {
+      const double x = random.get_double(), y = random.get_double(), side = double(k % 2);
+      points.push_back(k % 4 < 2 ? Point(x, y, side) : Point(side, x, y));
+    }
+    Tr tr;
+    ES::insert_delaunay(tr, points);
+    const auto volume = exact_volume(tr);
+    const ES::Min_max_dihedral_angle_criterion criterion;
+    double worst = worst_largest_angle(tr);
+    std::size_t one_step = 0, two_steps = 0, plain_fails = 0;
+    for(int pass = 0; pass < 3; ++pass)
+    {
+      std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
+      for(auto e : tr.finite_edges())
+      {
+        auto u = e.first->vertex(e.second), w = e.first->vertex(e.third);
+        if(CGAL::compare_xyz(w->point(), u->point()) == CGAL::SMALLER) std::swap(u, w);
+        edges.emplace_back(u, w);
+      }
+      std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+        const auto c = CGAL::compare_xyz(x.first->point(), y.first->point());
+        return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xyz(x.second->point(), y.second->point()) == CGAL::SMALLER);
+      });
+      std::shuffle(edges.begin(), edges.end(), std::mt19937(seed + unsigned(pass)));
+      for(const auto& [u, w] : edges)
+      {
+        Tr::Cell_handle c;
+        int i, j;
+        if(!tr.is_edge(u, w, c, i, j)) continue;
+        // What one step can do here: the plain removal on a copy.
+        Tr copy = tr;
+        Tr::Vertex_handle cu, cw;
+        for(auto v : copy.finite_vertex_handles())
+        {
+          if(v->point() == u->point()) cu = v;
+          if(v->point() == w->point()) cw = v;
+        }
+        const bool plain = ES::remove_edge(copy, edge_of(copy, cu, cw), criterion).removed();
+        const auto r = ES::remove_edge_in_two_steps(tr, edge_of(tr, u, w), criterion);
+        if(!plain) ++plain_fails;
+        if(!r.removed()) continue;
+        REQUIRE(r.steps == (plain ? 1 : 2));
+        (plain ? one_step : two_steps) += 1;
+        REQUIRE(!tr.is_edge(u, w, c, i, j));
+        REQUIRE(r.quality_after < r.quality_before);
+        const double now = worst_largest_angle(tr);
+        REQUIRE(now <= worst);
+        worst = now;
+      }
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(rebuilds_as_convex_mesh(tr));
+      REQUIRE(exact_volume(tr) == volume);
+    }
+    WARN("seed " << seed << ": " << one_step << " edges removed in one step, " << two_steps << " in two (of "
+                 << plain_fails << " that one step could not remove); worst largest angle " << worst);
+    REQUIRE(two_steps > 0);
+  }
+}
+
+TEST_CASE("Two-step edge removal keeps constrained facets and subdomains", "[edge removal][two-step]")
+{
+  // A star of 5 around an edge, with a constrained facet around it, or two
+  // subdomains: the edge stays, whatever a first step could do.
+  Domain_tr tr;
+  const auto v = build_star(tr, 2.0, regular_ring(5));
+  for(auto c : tr.all_cell_handles()) c->info().subdomain = tr.is_infinite(c) ? 0 : 1;
+  const auto cells = cell_set(tr);
+  const auto np = ES::parameters::mesh_constraints(ES::Domain_constraints());
+  SECTION("a constrained facet around the edge")
+  {
+    Domain_tr::Cell_handle c;
+    int i, j, k;
+    REQUIRE(tr.is_facet(v[0], v[1], v[4], c, i, j, k));
+    const int f = 6 - i - j - k;
+    c->info().facet_reference[f] = 7;
+    c->neighbor(f)->info().facet_reference[c->neighbor(f)->index(c)] = 7;
+    const auto r = ES::remove_edge_in_two_steps(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(), np);
+    REQUIRE(r.outcome == ES::EDGE_CONSTRAINED);
+    REQUIRE(cell_set(tr) == cells);
+  }
+  SECTION("two subdomains around the edge")
+  {
+    Domain_tr::Cell_handle c;
+    REQUIRE(tr.is_cell(v[0], v[1], v[2], v[3], c));
+    c->info().subdomain = 2;
+    const auto r = ES::remove_edge_in_two_steps(tr, edge_of(tr, v[0], v[1]), ES::Max_min_dihedral_angle_criterion(), np);
+    REQUIRE(r.outcome == ES::EDGE_CONSTRAINED);
+    REQUIRE(cell_set(tr) == cells);
+  }
+}
+
 TEST_CASE("Multi-face removal replaces the 2m tetrahedra of a sandwich by the m + 2 around the new edge",
           "[multi-face removal]")
 {
@@ -657,8 +761,8 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
   INFO("seed " << seed);
   const auto points = random_in_cube(500, seed);
   for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::EDGE_REMOVAL), unsigned(ES::MULTI_FACE_REMOVAL),
-                             unsigned(ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL), unsigned(ES::TOPOLOGICAL_OPERATIONS),
-                             unsigned(ES::ALL_OPERATIONS)})
+                             unsigned(ES::TWO_STEP_EDGE_REMOVAL), unsigned(ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL),
+                             unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
     for(bool minmax : {false, true})
     {
       CAPTURE(operations, minmax);
@@ -675,8 +779,10 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
                  face_removals = (operations & ES::MULTI_FACE_REMOVAL) != 0;
       REQUIRE((removals || r.edge_removals == 0));
       REQUIRE((face_removals || r.face_removals == 0));
+      REQUIRE(((operations & ES::TWO_STEP_EDGE_REMOVAL) || r.two_step_removals == 0));
       REQUIRE(((operations & ES::SMOOTHING) || r.smoothing_moves == 0));
-      REQUIRE((flips || r.number_of_operations() == r.edge_removals + r.face_removals + r.smoothing_moves));
+      REQUIRE((flips || r.number_of_operations() ==
+                            r.edge_removals + r.two_step_removals + r.face_removals + r.smoothing_moves));
       const double worst_now = minmax ? worst_largest_angle(tr) : worst_smallest_angle(tr);
       REQUIRE(r.worst_after == worst_now);
       // The worst cells of a random point set are slivers on the hull, which
@@ -690,9 +796,9 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       REQUIRE(exact_volume(tr) == volume);
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
-                         << " by " << r.edge_removals << " edge removals, " << r.face_removals
+                         << " by " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, " << r.face_removals
                          << " multi-face removals, " << r.smoothing_moves << " smoothing moves and "
-                         << r.number_of_operations() - r.edge_removals - r.face_removals - r.smoothing_moves
+                         << r.number_of_operations() - r.edge_removals - r.two_step_removals - r.face_removals - r.smoothing_moves
                          << " flips; " << r.visits << " visits, "
                          << r.stuck << " stuck");
       // Converged: no cell has an operation that helps, so a second run
@@ -780,7 +886,7 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     REQUIRE(subdomain_volumes() == volumes);
     REQUIRE(constrained_facets() == facets);
     for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
-    WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.face_removals << " multi-face removals, "
+    WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, " << r.face_removals << " multi-face removals, "
                          << r.smoothing_moves << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
                          << r.worst_after);
     if(operations & ES::SMOOTHING)

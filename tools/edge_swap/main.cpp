@@ -29,7 +29,8 @@ int main(int argc, char** argv)
                        "edge-ratio (longest/shortest edge)|radius-ratio|dihedral-sine|volume-length");
   optimize->add_option("--operations", opt.operations,
                        "quality criteria: the worst-first driver's operations, comma-separated: flips, edge-removal, "
-                       "multi-face-removal, smoothing (moves interior points), topological (the first three), all "
+                       "multi-face-removal, two-step-edge-removal, smoothing (moves interior points), topological (all but "
+                       "smoothing), all "
                        "(default); or paper-flips: the paper's driver (rounds over every facet)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");

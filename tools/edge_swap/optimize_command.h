@@ -80,13 +80,15 @@ inline unsigned quality_operations(const std::string& list)
     if(name == "flips") bits |= ES::FLIPS;
     else if(name == "edge-removal") bits |= ES::EDGE_REMOVAL;
     else if(name == "multi-face-removal") bits |= ES::MULTI_FACE_REMOVAL;
+    else if(name == "two-step-edge-removal") bits |= ES::TWO_STEP_EDGE_REMOVAL;
     else if(name == "smoothing") bits |= ES::SMOOTHING;
     else if(name == "topological") bits |= ES::TOPOLOGICAL_OPERATIONS;
     else if(name == "all") bits |= ES::ALL_OPERATIONS;
     else if(name == "paper-flips") bits |= paper_flips;
     else
       throw Usage_error("--operations: unknown operation '" + name +
-                        "' (flips, edge-removal, multi-face-removal, smoothing, topological, all, paper-flips)");
+                        "' (flips, edge-removal, multi-face-removal, two-step-edge-removal, smoothing, topological, "
+                        "all, paper-flips)");
     begin = end + 1;
   }
   if((bits & paper_flips) && bits != paper_flips)
@@ -121,6 +123,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"operations", o.operations},
                           {"ending", ES::swap_ending_name(report.ending)},
                           {"edge_removals", report.edge_removals},
+                          {"two_step_edge_removals", report.two_step_removals},
                           {"multi_face_removals", report.face_removals},
                           {"faces_removed", report.faces_removed},
                           {"smoothing_moves", report.smoothing_moves},
@@ -136,7 +139,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   files.commit();
   const auto& f = report.flips;
   std::cout << o.criterion << ", worst first (" << o.operations << "): " << ES::swap_ending_name(report.ending)
-            << "; edge removals " << report.edge_removals << ", multi-face removals " << report.face_removals
+            << "; edge removals " << report.edge_removals << " (" << report.two_step_removals
+            << " more in two steps), multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
             << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst "
             << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";

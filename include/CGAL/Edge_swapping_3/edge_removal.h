@@ -55,6 +55,7 @@ struct Edge_removal_report
   double quality_before = 0;    ///< the worst value of the measure over the finite ones
   double quality_after = 0;     ///< the worst over the best triangulation's finite cells (when one is valid)
   int new_cells = 0;            ///< 2n-4 (infinite ones included) when removed, else 0
+  int steps = 0;                ///< 1 when removed, 2 when removed in two steps (`remove_edge_in_two_steps`)
 
   bool removed() const { return outcome == EDGE_REMOVED; }
 };
@@ -76,6 +77,9 @@ struct Edge_star
   std::vector<Cell_handle> cells;
   std::vector<Vertex_handle> ring;
   bool on_hull = false;
+
+  /// A star to be filled by hand (a ring that the mesh does not hold yet).
+  Edge_star() = default;
 
   Edge_star(const Tr& tr, const typename Tr::Edge& e, int maximum)
     : a(e.first->vertex(e.second)), b(e.first->vertex(e.third))
@@ -139,6 +143,8 @@ struct Edge_star
 /// every tetrahedron is positively oriented (exact predicate). A cell with
 /// the infinite vertex is valid when no vertex of the star lies strictly
 /// beyond its hull facet (`planned_cell_orientation`), and has no score.
+/// With a `floor`, only the triangulations whose every scored tetrahedron
+/// scores above it are considered (fewer tetrahedra measured and oriented).
 template <class Tr, class Score>
 class Ring_triangulation
 {
@@ -146,7 +152,7 @@ public:
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
 
-  Ring_triangulation(const Tr& tr, const Edge_star<Tr>& star, const Score& score)
+  Ring_triangulation(const Tr& tr, const Edge_star<Tr>& star, const Score& score, double floor = -HUGE_VAL)
     : n_(int(star.ring.size())), best_(n_ * n_, -HUGE_VAL), split_(n_ * n_, -1)
   {
     const auto& s = star.ring;
@@ -159,12 +165,15 @@ public:
       return double(score(t));
     };
     // The two tetrahedra of triangle (i, k, j), i < k < j, positively
-    // oriented as tuples; -inf when either is not positive.
+    // oriented as tuples; -inf when either is not positive or does not
+    // score above the floor.
     auto triangle_score = [&](int i, int k, int j) {
       const Tuple ta = {star.a, s[j], s[k], s[i]}, tb = {star.b, s[i], s[k], s[j]};
+      const double value = (std::min)(valued(ta), valued(tb));
+      if(!(value > floor)) return -HUGE_VAL;
       for(const Tuple& t : {ta, tb})
         if(planned_cell_orientation(tr, t, others.data(), int(others.size())) != POSITIVE) return -HUGE_VAL;
-      return (std::min)(valued(ta), valued(tb));
+      return value;
     };
     for(int i = 0; i + 1 < n_; ++i) best_[i * n_ + i + 1] = HUGE_VAL; // an edge of the polygon
     for(int gap = 2; gap < n_; ++gap)
@@ -174,7 +183,7 @@ public:
         for(int k = i + 1; k < j; ++k)
         {
           const double sides = (std::min)(best_[i * n_ + k], best_[k * n_ + j]);
-          if(!(sides > -HUGE_VAL)) continue;
+          if(!(sides > floor) || !(sides > best_[i * n_ + j])) continue;
           const double value = (std::min)(sides, triangle_score(i, k, j));
           if(value > -HUGE_VAL && value > best_[i * n_ + j])
           {
@@ -211,11 +220,33 @@ private:
 };
 
 
-/// `remove_edge` on a star already gathered.
+/// Whether a facet around the star's edge is constrained or two subdomains
+/// meet there: then the edge stays.
+template <class Tr, class Constraints>
+bool star_is_constrained(const Tr& tr, const Edge_star<Tr>& star, const Constraints& constraints)
+{
+  const std::size_t n = star.cells.size();
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    const auto c = star.cells[k];
+    // The facet (a, b, s_{k+1}) lies between cells k and k+1 (cell 0 is finite).
+    const int f = c->index(star.ring[k]);
+    if((!tr.is_infinite(c) && !constraints.same_subdomain(c, star.cells.front())) ||
+       (!tr.is_infinite(star.ring[(k + 1) % n]) &&
+        (constraints.is_facet_constrained(c, f) || constraints.is_facet_constrained(c->neighbor(f), c->neighbor(f)->index(c)))))
+      return true;
+  }
+  return false;
+}
+
+/// `remove_edge` on a star already gathered. The best triangulation of the
+/// ring must beat `required` (a value of the measure) beyond the
+/// tolerance; by default, the worst of the cells it replaces.
 template <class Tr, class Measure, bool larger_is_worse, class Constraints>
 Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
                                      const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                     const Constraints& constraints, std::vector<typename Tr::Cell_handle>& created)
+                                     const Constraints& constraints, std::vector<typename Tr::Cell_handle>& created,
+                                     const double* required = nullptr)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
@@ -224,19 +255,10 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
   Edge_removal_report report;
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
-  const int n = report.ring_size;
-  for(int k = 0; k < n; ++k)
+  if(star_is_constrained(tr, star, constraints))
   {
-    const auto c = star.cells[k];
-    // The facet (a, b, s_{k+1}) lies between cells k and k+1 (cell 0 is finite).
-    const int f = c->index(star.ring[k]);
-    if((!tr.is_infinite(c) && !constraints.same_subdomain(c, star.cells.front())) ||
-       (!tr.is_infinite(star.ring[(k + 1) % n]) &&
-        (constraints.is_facet_constrained(c, f) || constraints.is_facet_constrained(c->neighbor(f), c->neighbor(f)->index(c)))))
-    {
-      report.outcome = EDGE_CONSTRAINED;
-      return report;
-    }
+    report.outcome = EDGE_CONSTRAINED;
+    return report;
   }
 
   // Scores: larger is better.
@@ -251,13 +273,15 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
   if(!best.exists()) { report.outcome = NO_VALID_TRIANGULATION; return report; }
   report.quality_after = larger_is_worse ? -best.score() : best.score();
   const double tolerance = criterion.relative_tolerance;
-  const bool better = larger_is_worse ? report.quality_after < report.quality_before * (1 - tolerance)
-                                      : report.quality_after > report.quality_before * (1 + tolerance);
+  const double bar = required != nullptr ? *required : report.quality_before;
+  const bool better = larger_is_worse ? report.quality_after < bar * (1 - tolerance)
+                                      : report.quality_after > bar * (1 + tolerance);
   if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
 
   const auto cells = replace_cells(tr, star.cells, best.cells(), constraints);
   created.insert(created.end(), cells.begin(), cells.end());
   report.new_cells = int(cells.size());
+  report.steps = 1;
   report.outcome = EDGE_REMOVED;
   return report;
 }

@@ -21,6 +21,7 @@
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
 #include <algorithm>
 #include <array>
@@ -39,7 +40,8 @@ enum Quality_operation : unsigned
   EDGE_REMOVAL = 2,       ///< edge removal on the cell's edges
   MULTI_FACE_REMOVAL = 4, ///< multi-face removal at the cell's facets
   SMOOTHING = 8,          ///< smoothing of the cell's interior vertices (moves points)
-  TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL, ///< every operation that keeps the points
+  TWO_STEP_EDGE_REMOVAL = 16, ///< edge removal after the removal of an edge of the edge's star
+  TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL | TWO_STEP_EDGE_REMOVAL, ///< every operation that keeps the points
   ALL_OPERATIONS = TOPOLOGICAL_OPERATIONS | SMOOTHING
 };
 
@@ -49,7 +51,8 @@ struct Quality_report
   Swap_ending ending = CONVERGED;               ///< CONVERGED (heap empty) or CYCLE_LIMIT_REACHED (operation limit)
   std::size_t visits = 0;                       ///< cells taken from the heap that still existed
   std::size_t stuck = 0;                        ///< of those, the cells no operation improved
-  std::size_t edge_removals = 0;                ///< edges removed
+  std::size_t edge_removals = 0;                ///< edges removed (in one step)
+  std::size_t two_step_removals = 0;            ///< edges removed in two steps (two edges each)
   std::size_t face_removals = 0;                ///< multi-face removals made
   std::size_t faces_removed = 0;                ///< triangles they removed
   std::size_t smoothing_moves = 0;              ///< smoothing moves made (a vertex may move more than once)
@@ -59,7 +62,7 @@ struct Quality_report
 
   std::size_t number_of_operations() const
   {
-    std::size_t n = edge_removals + face_removals + smoothing_moves;
+    std::size_t n = edge_removals + two_step_removals + face_removals + smoothing_moves;
     for(std::size_t f : flips) n += f;
     return n;
   }
@@ -226,6 +229,16 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   std::vector<Cell_handle> created;
   internal::Edge_removal_failures<Tr> failures;
   internal::Multi_face_removal_failures<Tr> face_failures;
+  // Two-step removal reads the cells through the ends of the edge: its
+  // failures are remembered with the stamps of the two vertices, which each
+  // change stamps (that of every vertex of a new or moved cell) renews.
+  internal::Failed_attempts<internal::Edge_key<Tr>, internal::Edge_key_hash, bool> two_step_failures;
+  internal::Flat_hash_map<typename Tr::Vertex_handle, std::uint64_t, internal::Handle_hash> stamps;
+  std::uint64_t changes = 0;
+  auto stamp_of = [&](typename Tr::Vertex_handle v) {
+    const std::uint64_t* s = stamps.find(v);
+    return s == nullptr ? std::uint64_t(0) : *s;
+  };
   // The vertices whose smoothing failed since their star last changed (a
   // cell around them made or removed, or a vertex of their star moved), and
   // the moves of each vertex.
@@ -299,6 +312,20 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         ++report.flips[conf.flip_kind()];
         improved = true;
       }
+    if(operations & TWO_STEP_EDGE_REMOVAL)
+      for(int i = 0; i < 4 && !improved; ++i)
+        for(int j = i + 1; j < 4 && !improved; ++j)
+        {
+          const auto key = internal::edge_key<Tr>(c->vertex(i), c->vertex(j));
+          const std::uint64_t signature =
+              internal::mix_bits(stamp_of(c->vertex(i))) + internal::mix_bits(stamp_of(c->vertex(j)));
+          if(two_step_failures.find(key, signature) != nullptr) continue;
+          improved = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion, constraints,
+                                                        maximum_ring, created)
+                         .removed();
+          two_step_failures.record(key, signature, false, improved);
+          if(improved) ++report.two_step_removals;
+        }
     if(operations & SMOOTHING)
       for(int i = 0; i < 4 && !improved; ++i)
       {
@@ -318,6 +345,9 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       }
     if(improved)
     {
+      ++changes;
+      for(Cell_handle n : created)
+        for(int i = 0; i < 4; ++i) stamps[n->vertex(i)] = changes;
       if(!settled.empty())
         for(Cell_handle n : created)
           for(int i = 0; i < 4; ++i) settled.erase(n->vertex(i));

@@ -1,0 +1,202 @@
+// Two-step edge removal: when no triangulation of an edge's ring beats the
+// tetrahedra around it, first remove an edge of its star (from one of its
+// ends to a ring vertex), which changes the ring, then the edge itself.
+// This is what TetGen's edge flip does at its first "link level" (Si, "TetGen,
+// a Delaunay-based quality tetrahedral mesh generator", 2015): a sequence
+// whose second step no single edge or multi-face removal makes. Both steps
+// must make cells better than the worst around the edge, so the worst of the
+// region gets better, as for every operation of the quality driver; when the
+// second step fails, the first is undone.
+
+#ifndef CGAL_EDGE_SWAPPING_3_TWO_STEP_EDGE_REMOVAL_H
+#define CGAL_EDGE_SWAPPING_3_TWO_STEP_EDGE_REMOVAL_H
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/edge_removal.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/internal/replace_cells.h>
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+namespace internal {
+
+/// The ring of (a, b) once the cells of `first` (the star of an edge (x, s),
+/// x = a or b, s = ring[k]) are replaced by `new_cells`: s gives way to the
+/// vertices that the new cells through a and b join it to. In the order
+/// and orientation of `Edge_star`, from the cells' own vertex order.
+template <class Tr>
+std::vector<typename Tr::Vertex_handle> ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
+                                                   const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells)
+{
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  const std::size_t n = star.ring.size();
+  // The next vertex in the ring, as pairs (from, to).
+  std::vector<std::pair<Vertex_handle, Vertex_handle>> next;
+  for(std::size_t j = 0; j < n; ++j)
+    if(j != k && (j + 1) % n != k) next.emplace_back(star.ring[j], star.ring[(j + 1) % n]);
+  for(const auto& t : new_cells)
+  {
+    int pa = -1, pb = -1, pu = -1, pw = -1;
+    for(int m = 0; m < 4; ++m)
+      if(t[m] == star.a) pa = m;
+      else if(t[m] == star.b) pb = m;
+      else if(pu < 0) pu = m;
+      else pw = m;
+    if(pa < 0 || pb < 0) continue;
+    // (a, b, t[pu], t[pw]) is positive when its positions in t make an even
+    // permutation; the ring turns the other way.
+    const int p[4] = {pa, pb, pu, pw};
+    int inversions = 0;
+    for(int x = 0; x < 4; ++x)
+      for(int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
+    if(inversions % 2 == 0) next.emplace_back(t[pw], t[pu]);
+    else next.emplace_back(t[pu], t[pw]);
+  }
+  std::vector<Vertex_handle> ring;
+  Vertex_handle v = star.ring[(k + n - 1) % n];
+  do
+  {
+    ring.push_back(v);
+    const auto it = std::find_if(next.begin(), next.end(), [&](const auto& e) { return e.first == v; });
+    if(it == next.end() || ring.size() > next.size()) return {};
+    v = it->second;
+  } while(v != ring.front());
+  if(ring.size() != next.size()) return {};
+  for(std::size_t j = 0; j < ring.size(); ++j)
+    if(tr.is_infinite(ring[j]))
+    {
+      std::rotate(ring.begin(), ring.begin() + (j + 1) % ring.size(), ring.end());
+      break;
+    }
+  return ring;
+}
+
+/// The two-step removal of `e` alone (the plain removal is not tried): for
+/// each edge (x, s) with x an end of `e` and s a finite vertex of its ring,
+/// in ring order, whether a triangulation of the ring of (x, s) whose cells
+/// beat the worst around `e` leaves a ring around `e` that has one too;
+/// the first such pair is made. Nothing changes until both steps are known
+/// to succeed. `created` receives the cells of both steps that remain. The
+/// attempt reads only cells through an end of `e` (and their points).
+template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
+                                             const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                             const Constraints& constraints, int maximum,
+                                             std::vector<typename Tr::Cell_handle>& created)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Edge Edge;
+  typedef std::array<Vertex_handle, 4> Tuple;
+  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+  Edge_removal_report report;
+  const Edge_star<Tr> star(tr, e, maximum);
+  report.ring_size = int(star.cells.size());
+  report.on_hull = star.on_hull;
+  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
+  // A facet around e that the first step keeps stays around e.
+  if(star_is_constrained(tr, star, constraints)) { report.outcome = EDGE_CONSTRAINED; return report; }
+  report.outcome = NO_IMPROVEMENT;
+  const Vertex_handle a = star.a, b = star.b;
+  // The first steps to try, with the position of s in the ring.
+  // Cell k of the star holds x and s_k.
+  std::vector<std::pair<std::size_t, Edge_star<Tr>>> firsts;
+  for(std::size_t k = 0; k < star.ring.size(); ++k)
+    if(!tr.is_infinite(star.ring[k]))
+      for(Vertex_handle x : {a, b})
+      {
+        const Cell_handle c = star.cells[k];
+        firsts.emplace_back(k, Edge_star<Tr>(tr, Edge(c, c->index(x), c->index(star.ring[k])), maximum));
+      }
+
+  // Scores: larger is better; both steps must score above `floor`.
+  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
+  double worst = HUGE_VAL;
+  for(Cell_handle c : star.cells)
+    if(!tr.is_infinite(c)) worst = (std::min)(worst, score(tuple_of<Tr>(c)));
+  const double bar = larger_is_worse ? -worst : worst;
+  report.quality_before = bar;
+  const double tolerance = criterion.relative_tolerance;
+  const double floor = larger_is_worse ? -bar * (1 - tolerance) : bar * (1 + tolerance);
+
+  for(const auto& [k, inner] : firsts)
+  {
+    if(int(inner.cells.size()) > maximum || star_is_constrained(tr, inner, constraints)) continue;
+    const Ring_triangulation<Tr, decltype(score)> step1(tr, inner, score, floor);
+    if(!step1.exists()) continue;
+    Edge_star<Tr> after;
+    after.a = a;
+    after.b = b;
+    after.ring = ring_after(tr, star, k, step1.cells());
+    if(after.ring.size() < 3 || int(after.ring.size()) > maximum) continue;
+    const Ring_triangulation<Tr, decltype(score)> step2(tr, after, score, floor);
+    if(!step2.exists()) continue;
+    // Both steps are known to succeed: make them.
+    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1.cells(), constraints);
+    const Cell_handle through = *std::find_if(first.begin(), first.end(),
+                                              [&](Cell_handle c) { return c->has_vertex(a) && c->has_vertex(b); });
+    const Edge_star<Tr> second(tr, Edge(through, through->index(a), through->index(b)), maximum);
+    CGAL_assertion(second.ring.size() == after.ring.size() &&
+                   std::is_permutation(second.ring.begin(), second.ring.end(), after.ring.begin()));
+    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2.cells(), constraints);
+    const std::size_t before_count = created.size();
+    for(Cell_handle c : first)
+      if(std::find(second.cells.begin(), second.cells.end(), c) == second.cells.end()) created.push_back(c);
+    created.insert(created.end(), last.begin(), last.end());
+    report.outcome = EDGE_REMOVED;
+    report.ring_size = int(after.ring.size());
+    report.on_hull = second.on_hull;
+    double after_score = HUGE_VAL;
+    for(std::size_t m = before_count; m < created.size(); ++m)
+      if(!tr.is_infinite(created[m])) after_score = (std::min)(after_score, score(tuple_of<Tr>(created[m])));
+    report.quality_after = larger_is_worse ? -after_score : after_score;
+    report.new_cells = int(first.size() + last.size());
+    report.steps = 2;
+    break;
+  }
+  return report;
+}
+
+} // namespace internal
+
+/// Removes the finite edge `e` of `tr` as `remove_edge` does, and when no
+/// triangulation of its ring makes the worst tetrahedron there better,
+/// tries it in two steps: first an edge from an end of `e` to a vertex of
+/// its ring, then `e`, each step replacing its cells by cells better than
+/// the worst around `e` under `criterion` (beyond its tolerance). A first
+/// step that the second cannot follow is undone. Cell handles around the
+/// edges removed, or tried and restored, are invalidated. The report is
+/// that of the plain removal when it succeeds; after two steps,
+/// `ring_size` is that of `e` at the second step and `new_cells` counts the
+/// cells of both.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
+///     an edge with a constrained facet around it, or between two subdomains, is kept \cgalParamNEnd
+///   \cgalParamNBegin{maximum_ring_size} the largest ring considered at either step, default 10 \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
+                                             const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                             const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  std::vector<typename Tr::Cell_handle> created;
+  const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, maximum, created);
+  if(plain.removed() || plain.outcome == RING_TOO_LARGE || plain.outcome == EDGE_CONSTRAINED) return plain;
+  return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, maximum, created);
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_TWO_STEP_EDGE_REMOVAL_H
