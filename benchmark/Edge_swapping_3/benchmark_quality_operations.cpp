@@ -204,6 +204,15 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
            counted);
   peer_row("CGAL flips + smoothing (5 steps)", [&] { return quality_peers::cgal_remeshing(input, true, 5); }, input,
            counted);
+  peer_row("Gmsh 4.8 optimize (swaps, relocation)",
+           [&] {
+             const auto dir = std::filesystem::temp_directory_path() / ("edge_swapping_3_gmsh_" + std::to_string(getpid()));
+             std::filesystem::create_directories(dir);
+             const auto r = quality_peers::gmsh_optimizer(input, "/usr/bin/python3", GMSH_SCRIPT, dir.string());
+             std::filesystem::remove_all(dir);
+             return r;
+           },
+           input, counted);
 }
 
 /// The cells of our triangulation, with its own points numbered.

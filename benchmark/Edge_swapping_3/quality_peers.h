@@ -9,6 +9,9 @@
 //  - CGAL's Tetrahedral_remeshing: its remesher's flip step alone, or flips
 //    and smoothing, each step repeated; boundaries (facets between subdomains,
 //    the hull) protected.
+//  - Gmsh 4.8's optimizer (Debian's python3-gmsh), through a Medit file and
+//    gmsh_optimize.py: each subdomain a discrete volume, the boundary
+//    triangles a discrete surface.
 
 #ifndef EDGE_SWAPPING_3_BENCHMARK_QUALITY_PEERS_H
 #define EDGE_SWAPPING_3_BENCHMARK_QUALITY_PEERS_H
@@ -17,7 +20,10 @@
 #include <CGAL/tetrahedral_remeshing.h>
 #include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <array>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -214,6 +220,71 @@ inline Peer_result tetgen_optimizer(const Cell_mesh& in, int optscheme, double m
   return r;
 }
 #endif
+
+/// Gmsh's optimizer, `gmsh_optimize.py` at `script` run by `python` on a
+/// Medit file of the mesh in `directory`: the tetrahedra with their
+/// subdomain as reference, the boundary triangles with reference 1. Gmsh
+/// keeps the node numbering of the file; a point not where the input has it
+/// counts as moved.
+inline Peer_result gmsh_optimizer(const Cell_mesh& in, const std::string& python, const std::string& script,
+                                  const std::string& directory)
+{
+  Peer_result r;
+  namespace IO = CGAL::Edge_swapping_3::IO;
+  IO::Medit_mesh m;
+  for(const auto& p : in.points) m.points.push_back({p.x(), p.y(), p.z()});
+  m.triangles = boundary_triangles(in);
+  m.triangle_references.assign(m.triangles.size(), 1);
+  m.tetrahedra = in.cells;
+  // Gmsh names entities from 1: subdomain 0 (outside the domain) is shifted.
+  for(int s : in.subdomains) m.tetrahedron_references.push_back(s + 1);
+  const std::string source = directory + "/gmsh_in.mesh", target = directory + "/gmsh_out.txt";
+  {
+    std::ofstream out(source);
+    IO::write_medit_file(out, m);
+  }
+  const std::string command = python + " '" + script + "' '" + source + "' '" + target + "' > /dev/null 2>&1";
+  if(std::system(command.c_str()) != 0)
+  {
+    r.error = "'" + python + " " + script + "' failed (is Debian's python3-gmsh installed?)";
+    return r;
+  }
+  std::ifstream text(target);
+  std::size_t nodes = 0, cells = 0;
+  text >> r.seconds >> nodes;
+  if(nodes != in.points.size())
+  {
+    r.error = "Gmsh changed the number of points";
+    return r;
+  }
+  r.mesh.points = in.points;
+  for(std::size_t k = 0; k < nodes; ++k)
+  {
+    std::size_t tag = 0;
+    double x, y, z;
+    text >> tag >> x >> y >> z;
+    if(tag < 1 || tag > nodes)
+    {
+      r.error = "Gmsh renumbered the points";
+      return r;
+    }
+    const K::Point_3 p(x, y, z);
+    r.moved += (p != in.points[tag - 1]);
+    r.mesh.points[tag - 1] = p;
+  }
+  text >> cells;
+  for(std::size_t k = 0; k < cells && text; ++k)
+  {
+    std::array<std::size_t, 4> t;
+    int volume;
+    text >> t[0] >> t[1] >> t[2] >> t[3] >> volume;
+    for(auto& i : t) --i;
+    r.mesh.cells.push_back(t);
+    r.mesh.subdomains.push_back(volume - 1);
+  }
+  if(!text) r.error = "the output of " + script + " is cut short";
+  return r;
+}
 
 } // namespace quality_peers
 
