@@ -1101,3 +1101,95 @@ TEST_CASE("Random sequences of smoothing keep validity - exact volume - the hull
     REQUIRE(boundary > 0);
   }
 }
+
+namespace {
+
+/// A visitor that checks what it is told: the old cells are intact before a
+/// replacement and the new ones fill the same region (equal exact volumes;
+/// the infinite cells, on the hull, are only counted), and every move moves.
+struct Checking_visitor
+{
+  std::size_t replacements = 0, moves = 0, mismatches = 0;
+  CGAL::Exact_rational old_volume = 0;
+
+  template <class T>
+  static CGAL::Exact_rational volume(const T& tr, const std::vector<typename T::Cell_handle>& cells)
+  {
+    CGAL::Exact_rational v = 0;
+    for(auto c : cells)
+      if(!tr.is_infinite(c))
+        v += exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+    return v;
+  }
+  template <class T>
+  void before_replacement(const T& tr, const std::vector<typename T::Cell_handle>& old_cells)
+  {
+    old_volume = volume(tr, old_cells);
+  }
+  template <class T>
+  void after_replacement(const T& tr, const std::vector<typename T::Cell_handle>& new_cells)
+  {
+    ++replacements;
+    if(volume(tr, new_cells) != old_volume) ++mismatches;
+  }
+  template <class T>
+  void after_move(const T&, typename T::Vertex_handle v, const typename T::Point& old_point)
+  {
+    ++moves;
+    if(v->point() == old_point) ++mismatches;
+  }
+};
+
+} // namespace
+
+TEST_CASE("The replacement visitor sees every operation of the quality driver - old cells before - new after - moves",
+          "[quality driver][visitor]")
+{
+  const unsigned seed = 9;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(300, seed);
+  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::ALL_OPERATIONS)})
+  {
+    CAPTURE(operations);
+    Tr tr;
+    ES::insert_delaunay(tr, points);
+    Checking_visitor visitor;
+    const auto r = ES::improve_worst_tetrahedra(
+        tr, ES::Max_min_dihedral_angle_criterion(),
+        ES::parameters::operations(operations).visitor(std::ref(visitor)));
+    std::size_t flips = 0;
+    for(std::size_t f : r.flips) flips += f;
+    REQUIRE(r.number_of_operations() > 0);
+    REQUIRE(visitor.mismatches == 0);
+    // A two-step removal is two replacements.
+    REQUIRE(visitor.replacements == flips + r.edge_removals + 2 * r.two_step_removals + r.face_removals);
+    REQUIRE(visitor.moves == r.smoothing_moves);
+    if(operations == ES::ALL_OPERATIONS) REQUIRE(visitor.moves > 0);
+  }
+  SECTION("each operation alone, through std::ref")
+  {
+    Tr tr;
+    ES::insert_delaunay(tr, points);
+    Checking_visitor visitor;
+    const ES::Max_min_dihedral_angle_criterion criterion;
+    std::size_t removed = 0, moved = 0;
+    for(auto v : std::vector<Tr::Vertex_handle>(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end()))
+    {
+      Tr::Cell_handle c = v->cell();
+      if(tr.is_infinite(c)) continue;
+      const int i = c->index(v), j = (i + 1) & 3;
+      removed += ES::remove_edge_in_two_steps(tr, Tr::Edge(c, i, j), criterion,
+                                              CGAL::parameters::visitor(std::ref(visitor))).removed();
+      c = v->cell();
+      removed += ES::remove_faces(tr, Tr::Facet(c, c->index(v)), criterion,
+                                  CGAL::parameters::visitor(std::ref(visitor))).removed();
+      moved += ES::smooth_vertex(tr, v, criterion, CGAL::parameters::visitor(std::ref(visitor))).moved();
+    }
+    REQUIRE(removed > 0);
+    REQUIRE(moved > 0);
+    REQUIRE(visitor.replacements >= removed);
+    REQUIRE(visitor.moves == moved);
+    REQUIRE(visitor.mismatches == 0);
+    REQUIRE(tr.is_valid());
+  }
+}

@@ -16,6 +16,7 @@
 #include <CGAL/enum.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
@@ -242,10 +243,11 @@ bool star_is_constrained(const Tr& tr, const Edge_star<Tr>& star, const Constrai
 /// `remove_edge` on a star already gathered. The best triangulation of the
 /// ring must beat `required` (a value of the measure) beyond the
 /// tolerance; by default, the worst of the cells it replaces.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
                                      const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                     const Constraints& constraints, std::vector<typename Tr::Cell_handle>& created,
+                                     const Constraints& constraints, Visitor& visitor,
+                                     std::vector<typename Tr::Cell_handle>& created,
                                      const double* required = nullptr)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -278,7 +280,7 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
                                       : report.quality_after > bar * (1 + tolerance);
   if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
 
-  const auto cells = replace_cells(tr, star.cells, best.cells(), constraints);
+  const auto cells = replace_cells(tr, star.cells, best.cells(), constraints, visitor);
   created.insert(created.end(), cells.begin(), cells.end());
   report.new_cells = int(cells.size());
   report.steps = 1;
@@ -293,10 +295,10 @@ using Edge_removal_failures = Failed_attempts<Edge_key<Tr>, Edge_key_hash, Edge_
 /// `remove_edge` with its settings spelled out; the new cells (finite and
 /// infinite) are appended to `created`. With `failures`, a star already
 /// tried is not tried again.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
                                 const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                const Constraints& constraints, int maximum,
+                                const Constraints& constraints, Visitor& visitor, int maximum,
                                 std::vector<typename Tr::Cell_handle>& created,
                                 Edge_removal_failures<Tr>* failures = nullptr)
 {
@@ -306,11 +308,11 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
   if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
-  if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, created);
+  if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, visitor, created);
   const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
   const std::uint64_t signature = star.signature(tr);
   if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
-  report = remove_edge_star(tr, star, criterion, constraints, created);
+  report = remove_edge_star(tr, star, criterion, constraints, visitor, created);
   failures->record(key, signature, report, report.removed());
   return report;
 }
@@ -333,6 +335,7 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
 ///     an edge with a constrained facet around it, or between two subdomains, is kept \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_ring_size} the largest ring considered, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor` \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
@@ -343,8 +346,9 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   using CGAL::parameters::get_parameter;
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   std::vector<typename Tr::Cell_handle> created;
-  return internal::remove_edge(tr, e, criterion, constraints, maximum, created);
+  return internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
 }
 
 } // namespace Edge_swapping_3

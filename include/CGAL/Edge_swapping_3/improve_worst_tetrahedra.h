@@ -16,6 +16,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
@@ -126,6 +127,8 @@ void keep_first_occurrences(std::vector<Handle>& items)
 ///     \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
 ///     times the number of cells \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
+///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
@@ -140,6 +143,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const int maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), 20);
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   const std::size_t limit = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                              100 * tr.number_of_finite_cells());
   CGAL::Real_timer timer;
@@ -282,7 +286,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(operations & EDGE_REMOVAL)
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
-          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, maximum_ring, created, &failures)
+          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, visitor, maximum_ring,
+                                    created, &failures)
                  .removed())
           {
             ++report.edge_removals;
@@ -292,7 +297,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       for(int i = 0; i < 4 && !improved; ++i)
       {
         const auto r =
-            internal::remove_faces(tr, typename Tr::Facet(c, i), criterion, constraints, maximum_ring, created, &face_failures);
+            internal::remove_faces(tr, typename Tr::Facet(c, i), criterion, constraints, visitor, maximum_ring, created,
+                                 &face_failures);
         if(r.removed())
         {
           ++report.face_removals;
@@ -306,9 +312,13 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         const auto conf = classify_facet(tr, c, i);
         if(!conf.is_swappable() || !flip_respects_constraints(tr, conf.flip_plan(), constraints) || !criterion(tr, conf))
           continue;
+        const auto& plan = conf.flip_plan();
+        internal::visitor_of(visitor).before_replacement(
+            tr, std::vector<Cell_handle>(plan.old_cells.begin(), plan.old_cells.begin() + plan.number_of_old_cells));
         std::array<Cell_handle, 4> cells;
         const int n = flip(tr, conf, cells, constraints);
         created.assign(cells.begin(), cells.begin() + n);
+        internal::visitor_of(visitor).after_replacement(tr, created);
         ++report.flips[conf.flip_kind()];
         improved = true;
       }
@@ -321,7 +331,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
               internal::mix_bits(stamp_of(c->vertex(i))) + internal::mix_bits(stamp_of(c->vertex(j)));
           if(two_step_failures.find(key, signature) != nullptr) continue;
           improved = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion, constraints,
-                                                        maximum_ring, created)
+                                                        visitor, maximum_ring, created)
                          .removed();
           two_step_failures.record(key, signature, false, improved);
           if(improved) ++report.two_step_removals;
@@ -331,7 +341,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       {
         if(!may_move(c->vertex(i))) continue;
         star.clear();
-        if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints,
+        if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints, visitor,
                                    internal::default_smoothing_steps, star).moved())
         {
           created = star;

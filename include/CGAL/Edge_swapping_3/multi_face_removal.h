@@ -209,9 +209,9 @@ template <class Tr>
 using Multi_face_removal_failures = Failed_attempts<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
 
 /// The best disk of an explored sandwich, made when it improves.
-template <class Tr, class Sandwich, class Score, class Constraints>
+template <class Tr, class Sandwich, class Score, class Constraints, class Visitor>
 Multi_face_removal_report decide_removal(Tr& tr, Sandwich& sandwich, const Score& score, bool larger_is_worse,
-                                         double tolerance, const Constraints& constraints,
+                                         double tolerance, const Constraints& constraints, Visitor& visitor,
                                          std::vector<typename Tr::Cell_handle>& created)
 {
   typedef typename Tr::Cell_handle Cell_handle;
@@ -248,7 +248,7 @@ Multi_face_removal_report decide_removal(Tr& tr, Sandwich& sandwich, const Score
                                       : report.quality_after > report.quality_before * (1 + tolerance);
   if(!better) { report.outcome = NO_FACE_IMPROVEMENT; return report; }
 
-  const auto cells = replace_cells(tr, old_cells, new_cells, constraints);
+  const auto cells = replace_cells(tr, old_cells, new_cells, constraints, visitor);
   created.insert(created.end(), cells.begin(), cells.end());
   report.faces = m;
   report.new_cells = int(cells.size());
@@ -258,10 +258,10 @@ Multi_face_removal_report decide_removal(Tr& tr, Sandwich& sandwich, const Score
 
 /// `remove_faces` with its settings spelled out; the new cells are appended
 /// to `created`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
                                        const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                       const Constraints& constraints, int maximum_faces,
+                                       const Constraints& constraints, Visitor& visitor, int maximum_faces,
                                        std::vector<typename Tr::Cell_handle>& created,
                                        Multi_face_removal_failures<Tr>* failures = nullptr)
 {
@@ -308,7 +308,7 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   const Facet_key<Tr> key = facet_key<Tr>(c, f.second);
   if(failures != nullptr)
     if(const Multi_face_removal_report* known = failures->find(key, sandwich.signature())) return *known;
-  report = decide_removal(tr, sandwich, score, larger_is_worse, criterion.relative_tolerance, constraints, created);
+  report = decide_removal(tr, sandwich, score, larger_is_worse, criterion.relative_tolerance, constraints, visitor, created);
   if(failures != nullptr) failures->record(key, sandwich.signature(), report, report.removed());
   return report;
 }
@@ -329,6 +329,7 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
 ///     no constrained facet is removed, no two subdomains joined \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_ring_size} the most sandwiched triangles explored, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor` \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
@@ -339,8 +340,9 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   using CGAL::parameters::get_parameter;
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   std::vector<typename Tr::Cell_handle> created;
-  return internal::remove_faces(tr, f, criterion, constraints, maximum, created);
+  return internal::remove_faces(tr, f, criterion, constraints, visitor, maximum, created);
 }
 
 } // namespace Edge_swapping_3

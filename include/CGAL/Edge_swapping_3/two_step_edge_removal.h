@@ -83,10 +83,10 @@ std::vector<typename Tr::Vertex_handle> ring_after(const Tr& tr, const Edge_star
 /// the first such pair is made. Nothing changes until both steps are known
 /// to succeed. `created` receives the cells of both steps that remain. The
 /// attempt reads only cells through an end of `e` (and their points).
-template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
                                              const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                             const Constraints& constraints, int maximum,
+                                             const Constraints& constraints, Visitor& visitor, int maximum,
                                              std::vector<typename Tr::Cell_handle>& created)
 {
   typedef typename Tr::Cell_handle Cell_handle;
@@ -138,13 +138,13 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
     const Ring_triangulation<Tr, decltype(score)> step2(tr, after, score, floor);
     if(!step2.exists()) continue;
     // Both steps are known to succeed: make them.
-    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1.cells(), constraints);
+    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1.cells(), constraints, visitor);
     const Cell_handle through = *std::find_if(first.begin(), first.end(),
                                               [&](Cell_handle c) { return c->has_vertex(a) && c->has_vertex(b); });
     const Edge_star<Tr> second(tr, Edge(through, through->index(a), through->index(b)), maximum);
     CGAL_assertion(second.ring.size() == after.ring.size() &&
                    std::is_permutation(second.ring.begin(), second.ring.end(), after.ring.begin()));
-    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2.cells(), constraints);
+    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2.cells(), constraints, visitor);
     const std::size_t before_count = created.size();
     for(Cell_handle c : first)
       if(std::find(second.cells.begin(), second.cells.end(), c) == second.cells.end()) created.push_back(c);
@@ -180,6 +180,8 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints`:
 ///     an edge with a constrained facet around it, or between two subdomains, is kept \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_ring_size} the largest ring considered at either step, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: each
+///     step is a replacement of its own \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
@@ -190,10 +192,11 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
   using CGAL::parameters::get_parameter;
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   std::vector<typename Tr::Cell_handle> created;
-  const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, maximum, created);
+  const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
   if(plain.removed() || plain.outcome == RING_TOO_LARGE || plain.outcome == EDGE_CONSTRAINED) return plain;
-  return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, maximum, created);
+  return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, visitor, maximum, created);
 }
 
 } // namespace Edge_swapping_3

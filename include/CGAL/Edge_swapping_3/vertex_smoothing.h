@@ -163,10 +163,10 @@ bool is_smoothable(const Tr& tr, const std::vector<typename Tr::Cell_handle>& st
 
 /// `smooth_vertex` with its settings spelled out; the cells around the
 /// vertex are appended to `star_cells`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                               const Constraints& constraints, int maximum_steps,
+                               const Constraints& constraints, Visitor& visitor, int maximum_steps,
                                std::vector<typename Tr::Cell_handle>& star_cells)
 {
   typedef typename Tr::Point Point;
@@ -267,7 +267,9 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 
   if(report.steps > 0 && best_score > bar(start_score, smoothing_gain))
   {
+    const Point old_point = v->point();
     v->set_point(point(best));
+    visitor_of(visitor).after_move(tr, v, old_point);
     report.outcome = VERTEX_MOVED;
     report.quality_after = measure_of(best_score);
   }
@@ -291,6 +293,8 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most ascent steps after the smart Laplacian, default 20 \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3` (`after_move`), default
+///     `Default_replacement_visitor` \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
@@ -302,8 +306,9 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                      internal::default_smoothing_steps);
+  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   std::vector<typename Tr::Cell_handle> star;
-  return internal::smooth_vertex(tr, v, criterion, constraints, steps, star);
+  return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star);
 }
 
 } // namespace Edge_swapping_3

@@ -5,6 +5,7 @@
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_REPLACE_CELLS_H
 
 #include <CGAL/assertions.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -16,12 +17,14 @@ namespace internal {
 /// Replaces `old_cells` by `new_cells` (positively oriented tuples that fill
 /// the same region), glued to the outside and to each other; the new cells
 /// take the cell data of the old ones and each keeps the facet data of the
-/// outer facet it takes over. Returns the new cells.
-template <class Tr, class Constraints>
+/// outer facet it takes over. The visitor sees the old cells before and the
+/// new ones after. Returns the new cells.
+template <class Tr, class Constraints, class Visitor>
 std::vector<typename Tr::Cell_handle> replace_cells(Tr& tr, const std::vector<typename Tr::Cell_handle>& old_cells,
                                                     const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells,
-                                                    const Constraints& constraints)
+                                                    const Constraints& constraints, Visitor& visitor)
 {
+  visitor_of(visitor).before_replacement(tr, old_cells);
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   auto& tds = tr.tds();
@@ -96,6 +99,7 @@ std::vector<typename Tr::Cell_handle> replace_cells(Tr& tr, const std::vector<ty
   for(Cell_handle c : created)
     for(int i = 0; i < 4; ++i) c->vertex(i)->set_cell(c);
   for(Cell_handle c : old_cells) tds.delete_cell(c);
+  visitor_of(visitor).after_replacement(tr, created);
   return created;
 }
 
