@@ -81,7 +81,7 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted)
 
 void print(const char* name, const Quality_row& q, double seconds, const std::string& operations)
 {
-  std::printf("%-40s %6.2f / %6.2f %6zu %6zu %6zu %8.3f %8zu %8.2f  %s\n", name, q.smallest, q.largest, q.below_10,
+  std::printf("%-40s %6.2f / %6.2f %6zu %6zu %6zu %8.4f %8zu %8.2f  %s\n", name, q.smallest, q.largest, q.below_10,
               q.above_165, q.above_175, q.radius_ratio_1st_percentile, q.cells, seconds, operations.c_str());
   std::fflush(stdout);
 }

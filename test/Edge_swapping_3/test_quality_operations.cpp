@@ -796,9 +796,10 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       REQUIRE(exact_volume(tr) == volume);
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
-                         << " by " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, " << r.face_removals
-                         << " multi-face removals, " << r.smoothing_moves << " smoothing moves and "
-                         << r.number_of_operations() - r.edge_removals - r.two_step_removals - r.face_removals - r.smoothing_moves
+                         << " by " << r.edge_removals << " edge removals, " << r.two_step_removals
+                         << " in two steps, " << r.face_removals << " multi-face removals, " << r.smoothing_moves << " smoothing moves and "
+                         << r.number_of_operations() - r.edge_removals - r.two_step_removals - r.face_removals -
+                                r.smoothing_moves
                          << " flips; " << r.visits << " visits, "
                          << r.stuck << " stuck");
       // Converged: no cell has an operation that helps, so a second run
@@ -886,7 +887,8 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     REQUIRE(subdomain_volumes() == volumes);
     REQUIRE(constrained_facets() == facets);
     for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
-    WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, " << r.face_removals << " multi-face removals, "
+    WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, "
+                         << r.face_removals << " multi-face removals, "
                          << r.smoothing_moves << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
                          << r.worst_after);
     if(operations & ES::SMOOTHING)

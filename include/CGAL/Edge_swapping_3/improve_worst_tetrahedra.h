@@ -42,7 +42,8 @@ enum Quality_operation : unsigned
   MULTI_FACE_REMOVAL = 4, ///< multi-face removal at the cell's facets
   SMOOTHING = 8,          ///< smoothing of the cell's interior vertices (moves points)
   TWO_STEP_EDGE_REMOVAL = 16, ///< edge removal after the removal of an edge of the edge's star
-  TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL | TWO_STEP_EDGE_REMOVAL, ///< every operation that keeps the points
+  /// every operation that keeps the points
+  TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL | TWO_STEP_EDGE_REMOVAL,
   ALL_OPERATIONS = TOPOLOGICAL_OPERATIONS | SMOOTHING
 };
 

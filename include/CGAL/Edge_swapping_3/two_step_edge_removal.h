@@ -30,8 +30,9 @@ namespace internal {
 /// vertices that the new cells through a and b join it to. In the order
 /// and orientation of `Edge_star`, from the cells' own vertex order.
 template <class Tr>
-std::vector<typename Tr::Vertex_handle> ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
-                                                   const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells)
+std::vector<typename Tr::Vertex_handle>
+ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
+           const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   const std::size_t n = star.ring.size();
@@ -115,7 +116,9 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
       }
 
   // Scores: larger is better; both steps must score above `floor`.
-  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto value = [&](const Tuple& t) {
+    return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point());
+  };
   auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
   double worst = HUGE_VAL;
   for(Cell_handle c : star.cells)
@@ -183,7 +186,8 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: each
 ///     step is a replacement of its own \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+template <class Tr, class Measure, bool larger_is_worse,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
 Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
                                              const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                              const NamedParameters& np = CGAL::parameters::default_values())
