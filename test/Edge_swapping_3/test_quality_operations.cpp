@@ -535,6 +535,51 @@ TEST_CASE("Two-step edge removal - where no ring triangulation helps, an edge of
   }
 }
 
+TEST_CASE("Two-step edge removal on eight integer points - where one step cannot", "[edge removal][two-step]")
+{
+  // Found by search over small integer sets: the edge from (6, 3, 4) to
+  // (6, 7, 5) of their Delaunay triangulation is interior, has four
+  // tetrahedra around it (largest dihedral angle 164.50 degrees), and no
+  // triangulation of its ring does better; removing an edge of its star
+  // first leaves three, whose 3-2 flip does.
+  const std::vector<Point> points = {Point(7, 0, 6), Point(6, 7, 5), Point(6, 7, 3), Point(6, 3, 4),
+                                     Point(6, 3, 2), Point(6, 5, 7), Point(0, 4, 0), Point(5, 3, 4)};
+  auto vertex_at = [](const Tr& t, const Point& p) -> Tr::Vertex_handle {
+    for(Tr::Vertex_handle v : t.finite_vertex_handles())
+      if(v->point() == p) return v;
+    FAIL("no vertex at " << p);
+    return Tr::Vertex_handle();
+  };
+  const ES::Min_max_dihedral_angle_criterion criterion;
+  Tr one, two;
+  ES::insert_delaunay(one, points);
+  ES::insert_delaunay(two, points);
+  const auto volume = exact_volume(two);
+  const auto plain = ES::remove_edge(one, edge_of(one, vertex_at(one, Point(6, 3, 4)), vertex_at(one, Point(6, 7, 5))),
+                                     criterion);
+  REQUIRE(!plain.removed());
+  REQUIRE(plain.ring_size == 4);
+  REQUIRE(!plain.on_hull);
+  const auto a = vertex_at(two, Point(6, 3, 4)), b = vertex_at(two, Point(6, 7, 5));
+  const double worst_before = worst_largest_angle(two);
+  const auto r = ES::remove_edge_in_two_steps(two, edge_of(two, a, b), criterion);
+  REQUIRE(r.removed());
+  REQUIRE(r.steps == 2);
+  REQUIRE(r.ring_size == 3);
+  REQUIRE(std::abs(r.quality_before - 164.499) < 1e-3);
+  REQUIRE(r.quality_after < r.quality_before);
+  Tr::Cell_handle c;
+  int i, j;
+  REQUIRE(!two.is_edge(a, b, c, i, j));
+  REQUIRE(two.is_valid());
+  REQUIRE(every_cell_positive(two));
+  REQUIRE(rebuilds_as_convex_mesh(two));
+  REQUIRE(exact_volume(two) == volume);
+  REQUIRE(worst_largest_angle(two) <= worst_before);
+  WARN("two steps: largest angle around the edge " << r.quality_before << " -> " << r.quality_after << ", "
+                                                    << r.new_cells << " new cells");
+}
+
 TEST_CASE("Two-step edge removal keeps constrained facets and subdomains", "[edge removal][two-step]")
 {
   // A star of 5 around an edge, with a constrained facet around it, or two
