@@ -203,6 +203,41 @@ double best_by_enumeration(const ES::internal::Edge_star<Tr>& star, int i, int j
   return best;
 }
 
+/// `n` random points in the unit cube and `m` on its faces x = 0, x = 1,
+/// z = 0, z = 1, where the hull is flat: hull edges can be removed there.
+std::vector<Point> in_cube_and_on_faces(std::size_t n, int m, unsigned seed)
+{
+  auto points = random_in_cube(n, seed);
+  CGAL::Random random(seed);
+  for(int k = 0; k < m; ++k)
+  {
+    const double x = random.get_double(), y = random.get_double(), side = double(k % 2);
+    points.push_back(k % 4 < 2 ? Point(x, y, side) : Point(side, x, y));
+  }
+  return points;
+}
+
+/// The finite edges of `tr` by coordinates, then shuffled: the sequence
+/// depends on the seed only, not on the storage order (which CGAL's spatial
+/// sort draws at random).
+std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> shuffled_edges(const Tr& tr, unsigned seed)
+{
+  std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
+  for(auto e : tr.finite_edges())
+  {
+    auto u = e.first->vertex(e.second), w = e.first->vertex(e.third);
+    if(CGAL::compare_xyz(w->point(), u->point()) == CGAL::SMALLER) std::swap(u, w);
+    edges.emplace_back(u, w);
+  }
+  std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+    const auto c = CGAL::compare_xyz(x.first->point(), y.first->point());
+    return c == CGAL::SMALLER ||
+           (c == CGAL::EQUAL && CGAL::compare_xyz(x.second->point(), y.second->point()) == CGAL::SMALLER);
+  });
+  std::shuffle(edges.begin(), edges.end(), std::mt19937(seed));
+  return edges;
+}
+
 } // namespace
 
 TEST_CASE("Edge removal replaces the n tetrahedra of a ring by the best 2n-4", "[edge removal]")
@@ -408,13 +443,7 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
     INFO("seed " << seed);
     // Points on the cube's faces too: the hull is flat there, so hull edges
     // can be removed.
-    auto points = random_in_cube(400, seed);
-    CGAL::Random random(seed);
-    for(int k = 0; k < 120; ++k)
-    {
-      const double x = random.get_double(), y = random.get_double(), side = double(k % 2);
-      points.push_back(k % 4 < 2 ? Point(x, y, side) : Point(side, x, y));
-    }
+    const auto points = in_cube_and_on_faces(400, 120, seed);
     Tr tr;
     ES::insert_delaunay(tr, points);
     const auto volume = exact_volume(tr);
@@ -422,21 +451,7 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
     std::size_t removed = 0, attempts = 0, on_hull = 0;
     for(int pass = 0; pass < 3; ++pass)
     {
-      std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
-      for(auto e : tr.finite_edges())
-      {
-        auto u = e.first->vertex(e.second), w = e.first->vertex(e.third);
-        if(CGAL::compare_xyz(w->point(), u->point()) == CGAL::SMALLER) std::swap(u, w);
-        edges.emplace_back(u, w);
-      }
-      // By coordinates, then shuffled: the sequence depends on the seed only,
-      // not on the storage order (which CGAL's spatial sort draws at random).
-      std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
-        const auto c = CGAL::compare_xyz(x.first->point(), y.first->point());
-        return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xyz(x.second->point(), y.second->point()) == CGAL::SMALLER);
-      });
-      std::shuffle(edges.begin(), edges.end(), std::mt19937(seed + unsigned(pass)));
-      for(const auto& [u, w] : edges)
+      for(const auto& [u, w] : shuffled_edges(tr, seed + unsigned(pass)))
       {
         Tr::Cell_handle c;
         int i, j;
@@ -472,13 +487,7 @@ TEST_CASE("Two-step edge removal - where no ring triangulation helps, an edge of
     INFO("seed " << seed);
     // Points on the cube's faces too: edges on the flat hull, and rings
     // with the infinite vertex.
-    auto points = random_in_cube(300, seed);
-    CGAL::Random random(seed);
-    for(int k = 0; k < 80; ++k)
-    {
-      const double x = random.get_double(), y = random.get_double(), side = double(k % 2);
-      points.push_back(k % 4 < 2 ? Point(x, y, side) : Point(side, x, y));
-    }
+    const auto points = in_cube_and_on_faces(300, 80, seed);
     Tr tr;
     ES::insert_delaunay(tr, points);
     const auto volume = exact_volume(tr);
@@ -487,19 +496,7 @@ TEST_CASE("Two-step edge removal - where no ring triangulation helps, an edge of
     std::size_t one_step = 0, two_steps = 0, plain_fails = 0;
     for(int pass = 0; pass < 3; ++pass)
     {
-      std::vector<std::pair<Tr::Vertex_handle, Tr::Vertex_handle>> edges;
-      for(auto e : tr.finite_edges())
-      {
-        auto u = e.first->vertex(e.second), w = e.first->vertex(e.third);
-        if(CGAL::compare_xyz(w->point(), u->point()) == CGAL::SMALLER) std::swap(u, w);
-        edges.emplace_back(u, w);
-      }
-      std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
-        const auto c = CGAL::compare_xyz(x.first->point(), y.first->point());
-        return c == CGAL::SMALLER || (c == CGAL::EQUAL && CGAL::compare_xyz(x.second->point(), y.second->point()) == CGAL::SMALLER);
-      });
-      std::shuffle(edges.begin(), edges.end(), std::mt19937(seed + unsigned(pass)));
-      for(const auto& [u, w] : edges)
+      for(const auto& [u, w] : shuffled_edges(tr, seed + unsigned(pass)))
       {
         Tr::Cell_handle c;
         int i, j;
