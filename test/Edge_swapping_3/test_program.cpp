@@ -316,6 +316,7 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
   const std::pair<std::string, std::string> runs[] = {{"minmax-dihedral", "flips,edge-removal"},
                                                        {"radius-ratio", "multi-face-removal"},
                                                        {"maxmin-dihedral", "topological"},
+                                                       {"minmax-dihedral", "edge-removal,two-step-edge-removal"},
                                                        {"dihedral-sine", "smoothing"},
                                                        {"aspect-ratio", ""}};
   for(const auto& [criterion, operations] : runs)
@@ -335,6 +336,9 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
     const bool faces = operations.empty() || operations == "multi-face-removal" || operations == "topological";
     REQUIRE((stats.find("\"multi_face_removals\": 0,") == std::string::npos) == faces);
     REQUIRE(stats.find("\"driver\": \"worst first\"") != std::string::npos);
+    const bool two_steps = operations.empty() || operations == "topological" ||
+                           operations.find("two-step-edge-removal") != std::string::npos;
+    REQUIRE((stats.find("\"two_step_edge_removals\": 0,") == std::string::npos) == two_steps);
     const Run c = w.run("check " + w.path("out.ele"));
     REQUIRE(c.exit_code == 0);
     REQUIRE(c.out.find("valid triangulation") != std::string::npos);
