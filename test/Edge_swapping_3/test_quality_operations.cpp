@@ -863,6 +863,42 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
     }
 }
 
+TEST_CASE("The quality driver with a quality target works only on the cells worse than it", "[quality driver]")
+{
+  const unsigned seed = 10;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(400, seed);
+  const ES::Min_max_dihedral_angle_criterion criterion;
+  auto run = [&](Tr& tr, double target) {
+    return ES::improve_worst_tetrahedra(tr, criterion, ES::parameters::quality_target(target));
+  };
+  Tr all, some, none;
+  for(Tr* t : {&all, &some, &none}) ES::insert_delaunay(*t, points);
+  const auto volume = exact_volume(all);
+  const auto cells = cell_set(none);
+  // No cell has an angle of 180 degrees or more: nothing to do.
+  REQUIRE(run(none, 180).number_of_operations() == 0);
+  REQUIRE(cell_set(none) == cells);
+  const auto everywhere = ES::improve_worst_tetrahedra(all, criterion);
+  const auto above_165 = run(some, 165);
+  REQUIRE(above_165.number_of_operations() > 0);
+  REQUIRE(above_165.number_of_operations() < everywhere.number_of_operations());
+  REQUIRE(above_165.visits < everywhere.visits);
+  REQUIRE(above_165.worst_after <= above_165.worst_before);
+  REQUIRE(poor_cells(some, true) < poor_cells(none, true));
+  REQUIRE(some.is_valid());
+  REQUIRE(exact_volume(some) == volume);
+  // Converged for its target: a second run with it changes nothing.
+  const auto again = cell_set(some);
+  REQUIRE(run(some, 165).number_of_operations() == 0);
+  REQUIRE(cell_set(some) == again);
+  WARN("MinMax on 400 random points: " << everywhere.number_of_operations() << " operations and "
+                                        << everywhere.visits << " visits everywhere, "
+                                        << above_165.number_of_operations() << " and " << above_165.visits
+                                        << " above 165 degrees; cells above 165: " << poor_cells(none, true)
+                                        << " -> " << poor_cells(all, true) << " and " << poor_cells(some, true));
+}
+
 TEST_CASE("The quality driver keeps the subdomains and the constrained facets of a domain mesh", "[quality driver]")
 {
   const unsigned seed = 12;

@@ -40,6 +40,9 @@ int main(int argc, char** argv)
   optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);
   optimize->add_option("--schedule", opt.schedule, "queue (default: only what changed) or cycles (the paper's)");
   optimize->add_flag("--paper", opt.paper, "Delaunay: the paper's Algorithm 3 alone, no repair of a stuck state");
+  auto* target = optimize->add_option("--quality-target", opt.quality_target,
+                                      "worst-first driver: work only on the cells worse than this value of the "
+                                      "criterion's measure (degrees for the dihedral angles)");
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 
@@ -135,6 +138,7 @@ int main(int argc, char** argv)
     if(*optimize)
     {
       opt.start_given = start->count() > 0;
+      opt.quality_target_given = target->count() > 0;
       return run_optimize(opt);
     }
     if(*check) return run_check(check_path);

@@ -10,6 +10,7 @@
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <cmath>
 #include <type_traits>
 
 namespace edge_swap {
@@ -20,6 +21,8 @@ struct Optimize_options
   std::string perturb = "cgal", history, stats, schedule = "queue";
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   bool helper = false, start_given = false, paper = false;
+  double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
+  bool quality_target_given = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
 };
@@ -111,7 +114,12 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                    std::is_same<std::decay_t<decltype(criterion)>, ES::Min_edges_criterion>::value)
         return ES::Quality_report(); // refused before any work
       else
-        return ES::improve_worst_tetrahedra(tr, criterion, np::operations(operations, np::mesh_constraints(constraints)));
+      {
+        const auto settings = np::operations(operations, np::mesh_constraints(constraints));
+        return o.quality_target_given
+                   ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
+                   : ES::improve_worst_tetrahedra(tr, criterion, settings);
+      }
     });
   });
   Output_files files;
@@ -134,6 +142,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"worst_before", report.worst_before},
                           {"worst_after", report.worst_after},
                           {"seconds", report.seconds}};
+      if(o.quality_target_given) j["quality_target"] = o.quality_target;
       out << j.dump(2) << '\n';
     });
   files.commit();
@@ -176,6 +185,11 @@ inline int run_optimize(const Optimize_options& o)
   if(operations != 0 && !o.history.empty())
     throw Usage_error("--history records rounds, which the worst-first driver (--operations " + options.operations +
                       ") has not; --operations paper-flips has them");
+  if(o.quality_target_given && operations == 0)
+    throw Usage_error("--quality-target sets the worst-first driver (a quality --criterion, --operations other than "
+                      "paper-flips)");
+  if(o.quality_target_given && !std::isfinite(o.quality_target))
+    throw Usage_error("--quality-target must be a finite number");
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
                       "worst-first driver (--operations " + options.operations + ")");

@@ -128,6 +128,9 @@ void keep_first_occurrences(std::vector<Handle>& items)
 ///     \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
 ///     times the number of cells \cgalParamNEnd
+///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
+///     heap (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
+///     the run proves a local optimum everywhere \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
 ///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -145,6 +148,10 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const int maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), 20);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
+  const double target = choose_parameter(get_parameter(np, internal_np::quality_target),
+                                         larger_is_worse ? -HUGE_VAL : HUGE_VAL);
+  // Scores are larger-is-better: a cell scoring at least this needs no work.
+  const double enough = larger_is_worse ? -target : target;
   const std::size_t limit = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                              100 * tr.number_of_finite_cells());
   CGAL::Real_timer timer;
@@ -168,7 +175,9 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   std::size_t pushed = 0;
   auto push = [&](Cell_handle c) {
     if(!counted(c)) return;
-    heap.push(Entry{score(c), pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+    const double s = score(c);
+    if(s >= enough) return;
+    heap.push(Entry{s, pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   };
   // The cells whose operations may have changed, each pushed once. With edge
   // removal alone: those sharing an edge with a new cell (the ring of that

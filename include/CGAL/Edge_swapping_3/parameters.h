@@ -24,6 +24,7 @@ enum helper_rounds_before_rebuild_t { helper_rounds_before_rebuild };
 enum maximum_ring_size_t { maximum_ring_size };
 enum operations_t { operations };
 enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
+enum quality_target_t { quality_target };
 
 } // namespace internal_np
 
@@ -70,6 +71,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(operations)
 /// `int`: how many times smoothing may move one vertex in a run of
 /// `improve_worst_tetrahedra` (default 20).
 CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_moves_per_vertex)
+/// `double`: `improve_worst_tetrahedra` works only on the cells whose measure
+/// is worse than this value (default: on every cell).
+CGAL_EDGE_SWAPPING_3_PARAMETER(quality_target)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 
