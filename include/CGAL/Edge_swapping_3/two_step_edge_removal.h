@@ -5,8 +5,9 @@
 // a Delaunay-based quality tetrahedral mesh generator", 2015): a sequence
 // whose second step no single edge or multi-face removal makes. Both steps
 // must make cells better than the worst around the edge, so the worst of the
-// region gets better, as for every operation of the quality driver; when the
-// second step fails, the first is undone.
+// region gets better, as for every operation of the quality driver. The
+// second step is planned on the ring the first would leave, and nothing
+// changes until both are known to succeed.
 
 #ifndef CGAL_EDGE_SWAPPING_3_TWO_STEP_EDGE_REMOVAL_H
 #define CGAL_EDGE_SWAPPING_3_TWO_STEP_EDGE_REMOVAL_H
@@ -25,8 +26,8 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
 
-/// The ring of (a, b) once the cells of `first` (the star of an edge (x, s),
-/// x = a or b, s = ring[k]) are replaced by `new_cells`: s gives way to the
+/// The ring of (a, b) once the star of an edge (x, s), x = a or b,
+/// s = ring[k], is replaced by `new_cells`: s gives way to the
 /// vertices that the new cells through a and b join it to. In the order
 /// and orientation of `Edge_star`, from the cells' own vertex order.
 template <class Tr>
@@ -173,8 +174,9 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
 /// tries it in two steps: first an edge from an end of `e` to a vertex of
 /// its ring, then `e`, each step replacing its cells by cells better than
 /// the worst around `e` under `criterion` (beyond its tolerance). A first
-/// step that the second cannot follow is undone. Cell handles around the
-/// edges removed, or tried and restored, are invalidated. The report is
+/// step is made only when the second is known to follow; the mesh is
+/// unchanged otherwise. Cell handles around the edges removed are
+/// invalidated. The report is
 /// that of the plain removal when it succeeds; after two steps,
 /// `ring_size` is that of `e` at the second step and `new_cells` counts the
 /// cells of both.
