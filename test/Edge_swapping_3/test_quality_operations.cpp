@@ -97,6 +97,16 @@ bool rebuilds_as_convex_mesh(const Tr& tr)
   return problem.empty();
 }
 
+/// A valid triangulation of the convex hull, every cell positive, with the
+/// exact volume it had: what every operation must leave.
+void require_same_region(const Tr& tr, const CGAL::Exact_rational& volume)
+{
+  REQUIRE(tr.is_valid());
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(rebuilds_as_convex_mesh(tr));
+  REQUIRE(exact_volume(tr) == volume);
+}
+
 double smallest_angle(const Point& p, const Point& q, const Point& r, const Point& s)
 {
   return ES::Smallest_dihedral_angle()(p, q, r, s);
@@ -427,10 +437,7 @@ TEST_CASE("Edge removal on the hull - where the hull is flat around the edge", "
     REQUIRE(r.outcome == ES::EDGE_REMOVED);
     REQUIRE(r.new_cells == 6);
     REQUIRE(tr.number_of_finite_cells() == 4);
-    REQUIRE(tr.is_valid());
-    REQUIRE(every_cell_positive(tr));
-    REQUIRE(rebuilds_as_convex_mesh(tr));
-    REQUIRE(exact_volume(tr) == volume);
+    require_same_region(tr, volume);
     REQUIRE(r.quality_after == worst_largest_angle(tr));
   }
 }
@@ -467,10 +474,7 @@ TEST_CASE("Random sequences of edge removals keep validity - exact volume - and 
         REQUIRE(now >= worst);
         worst = now;
       }
-      REQUIRE(tr.is_valid());
-      REQUIRE(every_cell_positive(tr));
-      REQUIRE(rebuilds_as_convex_mesh(tr));
-      REQUIRE(exact_volume(tr) == volume);
+      require_same_region(tr, volume);
     }
     WARN("seed " << seed << ": " << removed << " edges removed (" << on_hull << " on the hull) in " << attempts
                  << " attempts; worst smallest angle " << worst);
@@ -521,10 +525,7 @@ TEST_CASE("Two-step edge removal - where no ring triangulation helps, an edge of
         REQUIRE(now <= worst);
         worst = now;
       }
-      REQUIRE(tr.is_valid());
-      REQUIRE(every_cell_positive(tr));
-      REQUIRE(rebuilds_as_convex_mesh(tr));
-      REQUIRE(exact_volume(tr) == volume);
+      require_same_region(tr, volume);
     }
     WARN("seed " << seed << ": " << one_step << " edges removed in one step, " << two_steps << " in two (of "
                  << plain_fails << " that one step could not remove); worst largest angle " << worst);
@@ -629,10 +630,7 @@ TEST_CASE("Multi-face removal replaces the 2m tetrahedra of a sandwich by the m 
       REQUIRE(r.faces == m);
       REQUIRE(r.new_cells == m + 2);
       REQUIRE(r.quality_after < r.quality_before);
-      REQUIRE(tr.is_valid());
-      REQUIRE(every_cell_positive(tr));
-      REQUIRE(rebuilds_as_convex_mesh(tr));
-      REQUIRE(exact_volume(tr) == volume);
+      require_same_region(tr, volume);
       REQUIRE(r.quality_after == worst_largest_angle(tr));
       // The result is the star of uw: edge removal's input.
       Tr star;
@@ -785,10 +783,7 @@ TEST_CASE("Random sequences of multi-face removals keep validity - exact volume 
         REQUIRE(now <= worst);
         worst = now;
       }
-      REQUIRE(tr.is_valid());
-      REQUIRE(every_cell_positive(tr));
-      REQUIRE(rebuilds_as_convex_mesh(tr));
-      REQUIRE(exact_volume(tr) == volume);
+      require_same_region(tr, volume);
     }
     WARN("seed " << seed << ": " << removals << " multi-face removals (" << larger << " of more than one face) in "
                  << attempts << " attempts; worst largest angle " << worst);
@@ -832,10 +827,7 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       if(minmax) REQUIRE(r.worst_after <= r.worst_before);
       else REQUIRE(r.worst_after >= r.worst_before);
       REQUIRE(poor_cells(tr, minmax) < poor_before);
-      REQUIRE(tr.is_valid());
-      REQUIRE(every_cell_positive(tr));
-      REQUIRE(rebuilds_as_convex_mesh(tr));
-      REQUIRE(exact_volume(tr) == volume);
+      require_same_region(tr, volume);
       WARN("operations " << operations << (minmax ? " MinMax: " : " MaxMin: ") << r.worst_before << " -> "
                          << r.worst_after << ", poor cells " << poor_before << " -> " << poor_cells(tr, minmax)
                          << " by " << r.edge_removals << " edge removals, " << r.two_step_removals
