@@ -278,7 +278,13 @@ inline Peer_result gmsh_optimizer(const Cell_mesh& in, const std::string& python
     std::array<std::size_t, 4> t;
     int volume;
     text >> t[0] >> t[1] >> t[2] >> t[3] >> volume;
-    for(auto& i : t) --i;
+    for(auto& i : t)
+      if(i < 1 || i > nodes)
+      {
+        r.error = "Gmsh named a node that its output does not hold";
+        return r;
+      }
+      else --i;
     r.mesh.cells.push_back(t);
     r.mesh.subdomains.push_back(volume - 1);
   }

@@ -130,7 +130,7 @@ void keep_first_occurrences(std::vector<Handle>& items)
 ///     times the number of cells \cgalParamNEnd
 ///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
 ///     heap (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
-///     the run proves a local optimum everywhere \cgalParamNEnd
+///     the run ends when no operation improves any cell \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
 ///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
 /// \cgalNamedParamsEnd
