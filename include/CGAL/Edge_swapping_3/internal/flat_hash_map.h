@@ -152,6 +152,37 @@ private:
   Flat_hash_map<Key, Nothing, Hash> map_;
 };
 
+/// A set that may contain keys never inserted, never misses one that was: one
+/// bit per key (a Bloom filter with one hash), to spare lookups in a large map
+/// that most keys are not in. `clear(n)` sizes it for about `n` keys.
+template <class Key, class Hash>
+class Bit_filter
+{
+public:
+  void clear(std::size_t expected_keys)
+  {
+    std::size_t words = 64;
+    while(64 * words < 8 * expected_keys) words *= 2; // about one bit in eight set
+    words_.assign(words, 0);
+  }
+  void insert(const Key& key)
+  {
+    if(words_.empty()) clear(1 << 16);
+    const std::size_t b = bit_of(key);
+    words_[b / 64] |= std::uint64_t(1) << (b % 64);
+  }
+  bool contains(const Key& key) const
+  {
+    if(words_.empty()) return false;
+    const std::size_t b = bit_of(key);
+    return (words_[b / 64] >> (b % 64)) & 1;
+  }
+
+private:
+  std::size_t bit_of(const Key& key) const { return std::size_t(mix_bits(Hash()(key))) & (64 * words_.size() - 1); }
+  std::vector<std::uint64_t> words_;
+};
+
 } // namespace internal
 } // namespace Edge_swapping_3
 } // namespace CGAL

@@ -5,8 +5,10 @@
 //  - a work queue: the first round visits every interior facet, later rounds
 //    only the facets whose configuration or tags changed since their last
 //    visit, so a round costs what the flips before it changed.
-// Driver state (the helper's tags, the queue) is kept here, indexed by cell
-// or facet, never in the TDS marks that CGAL's own traversals clear.
+// Driver state (the helper's tags, the queue) is kept here, in arrays indexed
+// by the cells' slot numbers, never in the TDS marks that CGAL's own
+// traversals clear. The paper's cycles name a facet by its three vertices,
+// as the paper does; the work queue names it by a cell and an index.
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
@@ -16,10 +18,13 @@
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -98,7 +103,8 @@ public:
   typedef Five_point_configuration<Tr> Configuration;
 
   Swap_driver(Tr& tr, const Driver_settings& settings, const Constraints& constraints, Visitor& visitor)
-    : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed)
+    : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed),
+      index_(tr.tds().cells())
   {}
 
   Tr& triangulation() { return tr_; }
@@ -107,12 +113,15 @@ public:
 
   // ---- what a rule calls ----
 
-  bool is_tagged(Cell_handle c) const { return !tags_.empty() && tags_.contains(c); }
+  bool is_tagged(Cell_handle c) const { return any_tag_ && (state(c) & TAGGED) != 0; }
 
   /// Tags `c` (the helper); a new tag queues the facets whose visit it may change.
   void tag(Cell_handle c)
   {
-    if(!tags_.insert(c)) return;
+    std::uint16_t& s = state(c);
+    if(s & TAGGED) return;
+    s |= TAGGED;
+    any_tag_ = true;
     ++record_.new_tags;
     if(!queueing_) return;
     for(int i = 0; i < 4; ++i) facet_changed(c, i);
@@ -127,22 +136,26 @@ public:
     const auto& plan = conf.flip_plan();
     current_cell_ = Cell_handle(); // the flip destroys the facet under visit, and may reuse its cell
     unwrap(visitor_).before_flip(tr_, plan);
-    // The facets between two old cells disappear (unless the flip makes them again).
+    // The old cells' state goes with them (their slots may be reused at
+    // once); in round 1 they stay marked, so that a list of cells skips them.
+    // In a cycle, the facets between two old cells are known dead (unless the
+    // flip makes them again).
     for(int k = 0; k < plan.number_of_old_cells; ++k)
     {
       const Cell_handle c = plan.old_cells[k];
-      if(!tags_.empty()) tags_.erase(c);
-      if(first_round_) touched_.insert(c);
-      for(int i = 0; i < 4; ++i)
-        if(is_old_cell(plan, c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i)))
-          forget_facet(facet_key<Tr>(c, i));
+      if(first_round_) state(c) = TOUCHED;
+      else if(!state_.empty()) state(c) = 0;
+      if(!queueing_)
+        for(int i = 0; i < 4; ++i)
+          if(is_old_cell(plan, c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i)))
+            moved_[facet_key<Tr>(c, i)] = Cell_handle();
     }
     std::array<Cell_handle, 4> created;
     const int n = execute_flip(tr_, plan, created, constraints_);
     unwrap(visitor_).after_flip(tr_, plan, created, n);
     for(int k = 0; k < n; ++k)
     {
-      if(first_round_) touched_.insert(created[k]);
+      if(first_round_) state(created[k]) |= TOUCHED;
       for(int i = 0; i < 4; ++i) facet_changed(created[k], i);
     }
     if(queueing_ && !registered_.empty())
@@ -164,25 +177,16 @@ public:
     if(!queueing_) return;
     const Cell_handle c = conf.cell();
     const int i = conf.index();
-    const Key key = facet_key<Tr>(c, i);
-    if(non_delaunay && !kept_overflow_)
-    {
-      kept_.insert(key);
-      // Past a sixteenth of the cells, the final count passes over every facet
-      // (see number_of_non_delaunay_facets_left): stop keeping the list.
-      if(16 * kept_.size() > tr_.number_of_cells())
-      {
-        kept_overflow_ = true;
-        kept_.clear();
-      }
-    }
+    if(non_delaunay) state(c) |= std::uint16_t(KEPT << i);
     Vertex_handle a, b;
     if(next_round)
-    {
-      if(queued_.emplace(key, c).second) next_.push_back(key);
-    }
+      queue_facet(c, i);
     else if(conf.depends_on_edge_ring(a, b))
-      register_facet(a, b, c, i);
+    {
+      const Edge edge = edge_key<Tr>(a, b);
+      registered_[edge].push_back(facet_slot(index_(c), i));
+      may_be_registered_.insert(edge);
+    }
   }
 
   // ---- the schedules ----
@@ -208,29 +212,21 @@ public:
     {
       Cell_handle c;
       int i;
-      if(find_facet(tr_, key, Cell_handle(), c, i) && queued_.emplace(key, c).second) next_.push_back(key);
+      if(find_facet(tr_, key, Cell_handle(), c, i) && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)))
+        queue_facet(c, i);
     }
   }
 
   /// After a work-queue run: the interior facets that are not locally
-  /// Delaunay (from the kept list, or, if it was dropped, one pass over all).
+  /// Delaunay. Every facet was visited in its last configuration, so they
+  /// are among those kept (not Delaunay at their last visit).
   std::vector<Key> non_delaunay_facets_kept() const
   {
     std::vector<Key> facets;
-    if(kept_overflow_)
-    {
-      for(Cell_handle c : tr_.finite_cell_handles())
-        for(int i = 0; i < 4; ++i)
-          if(holds_facet(tr_, c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation))
-            facets.push_back(facet_key<Tr>(c, i));
-      return facets;
-    }
-    kept_.for_each([&](const Key& key) {
-      Cell_handle c;
-      int i;
-      if(find_facet(tr_, key, Cell_handle(), c, i) && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) &&
+    for_each_kept_facet([&](Cell_handle c, int i) {
+      if(!tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) &&
          !is_locally_delaunay(tr_, c, i, settings_.perturbation))
-        facets.push_back(key);
+        facets.push_back(facet_key<Tr>(c, i));
     });
     return facets;
   }
@@ -239,15 +235,9 @@ public:
   /// their last visit and still are (exact), plus the hull facets.
   std::size_t number_of_non_delaunay_facets_left() const
   {
-    // Each kept facet is found again through the cells around a vertex: past
-    // a sixteenth of the cells, one pass over every facet costs less.
-    if(kept_overflow_ || 16 * kept_.size() > tr_.number_of_cells())
-      return number_of_non_delaunay_facets(tr_, settings_.perturbation);
     std::size_t n = 0;
-    kept_.for_each([&](const Key& key) {
-      Cell_handle c;
-      int i;
-      if(find_facet(tr_, key, Cell_handle(), c, i) && !is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
+    for_each_kept_facet([&](Cell_handle c, int i) {
+      if(!is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
     });
     std::vector<Cell_handle> outside;
     tr_.incident_cells(tr_.infinite_vertex(), std::back_inserter(outside));
@@ -276,20 +266,67 @@ private:
            (c->neighbor(i) == current_cell_ && current_cell_->neighbor(current_index_) == c);
   }
 
-  Key current_key() const { return current_cell_ == Cell_handle() ? Key() : facet_key<Tr>(current_cell_, current_index_); }
+  // ---- per-cell state (slot-indexed) and the work queue ----
 
-  /// A facet that a flip destroyed: out of the queue (or, in a cycle, known dead).
-  void forget_facet(const Key& key)
+  // Bits of a cell's state: facet i queued from this cell (work queue), facet
+  // i not locally Delaunay at its last visit from this cell, tagged (helper),
+  // changed by a flip in round 1.
+  static constexpr std::uint16_t QUEUED = 1, KEPT = 1 << 4, TAGGED = 1 << 8, TOUCHED = 1 << 9;
+
+  std::uint16_t& state_at(std::size_t k) const
   {
-    if(!kept_.empty()) kept_.erase(key);
-    if(queueing_)
-      queued_.erase(key);
-    else
-      moved_[key] = Cell_handle();
+    if(k >= state_.size()) state_.resize(index_.number_of_slots(), 0);
+    return state_[k];
   }
 
-  /// A facet of a new (or newly tagged) cell: queued with that cell as its
-  /// hint, or, in a cycle, found there when its turn comes.
+  std::uint16_t& state(Cell_handle c) const { return state_at(index_(c)); }
+
+  /// A facet in the queue: the slot of a cell that held it, and its index there.
+  static std::uint32_t facet_slot(std::size_t k, int i)
+  {
+    if(k >= (std::size_t(1) << 30)) throw std::length_error("Edge_swapping_3: more than 2^30 cells");
+    return std::uint32_t(4 * k + std::size_t(i));
+  }
+
+  Cell_handle cell_in_slot(std::uint32_t slot) const
+  {
+    typename Tr::Cell* cell = index_.item(slot / 4);
+    return cell == nullptr ? Cell_handle() : tr_.tds().cells().iterator_to(*cell);
+  }
+
+  /// Queues interior facet (c, i) unless it is queued already from either side.
+  void queue_facet(Cell_handle c, int i)
+  {
+    const Cell_handle n = c->neighbor(i);
+    const std::size_t k = index_(c);
+    if(state_at(index_(n)) & (QUEUED << n->index(c))) return;
+    std::uint16_t& sc = state_at(k);
+    if(sc & (QUEUED << i)) return;
+    sc |= std::uint16_t(QUEUED << i);
+    next_.push_back(facet_slot(k, i));
+  }
+
+  /// Calls `f(c, i)` once for every facet kept (not Delaunay at its last visit).
+  template <class F>
+  void for_each_kept_facet(F f) const
+  {
+    for(std::size_t k = 0; k < state_.size(); ++k)
+    {
+      if((state_[k] & (0xF * KEPT)) == 0) continue;
+      const Cell_handle c = cell_in_slot(std::uint32_t(4 * k));
+      if(c == Cell_handle()) continue;
+      for(int i = 0; i < 4; ++i)
+      {
+        if(!(state_[k] & (KEPT << i))) continue;
+        const Cell_handle n = c->neighbor(i);
+        if((state(n) & (KEPT << n->index(c))) && address_of(n) < address_of(c)) continue; // kept from n too
+        f(c, i);
+      }
+    }
+  }
+
+  /// A facet of a new (or newly tagged) cell: queued, or, in a cycle, found
+  /// there when its turn comes.
   void facet_changed(Cell_handle c, int i)
   {
     if(!queueing_)
@@ -298,13 +335,8 @@ private:
       return;
     }
     if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) return;
-    const Key key = facet_key<Tr>(c, i);
     if(is_current(c, i)) return; // the visit under way has seen it
-    const auto done = queued_.emplace(key, c);
-    if(done.second)
-      next_.push_back(key);
-    else
-      *done.first = c;
+    queue_facet(c, i);
   }
 
   /// The facet of a listed or queued key: its hint when no flip changed it,
@@ -324,21 +356,24 @@ private:
     return found;
   }
 
-  void register_facet(Vertex_handle a, Vertex_handle b, Cell_handle c, int i)
-  {
-    registered_[edge_key<Tr>(a, b)].push_back({facet_key<Tr>(c, i), c});
-  }
-
-  /// Queues the facets registered on edge `(a, b)`, whose cells changed.
+  /// Queues the facets registered on edge `(a, b)`, whose cells changed. A
+  /// registered slot may hold another cell by now: its facet is then queued
+  /// for nothing (a visit too many, never one too few: the facet that was
+  /// registered lost its cell, whose successor queued it).
   void push_registered(Vertex_handle a, Vertex_handle b)
   {
     if(registered_.empty()) return;
     const Edge edge = edge_key<Tr>(a, b);
-    const std::vector<Listed>* facets = registered_.find(edge);
+    if(!may_be_registered_.contains(edge)) return;
+    const std::vector<std::uint32_t>* facets = registered_.find(edge);
     if(facets == nullptr) return;
-    const Key current = current_key();
-    for(const Listed& f : *facets)
-      if(!(f.key == current) && queued_.emplace(f.key, f.hint).second) next_.push_back(f.key);
+    for(std::uint32_t slot : *facets)
+    {
+      const Cell_handle c = cell_in_slot(slot);
+      const int i = int(slot % 4);
+      if(c != Cell_handle() && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) && !is_current(c, i))
+        queue_facet(c, i);
+    }
     registered_.erase(edge);
   }
 
@@ -351,6 +386,12 @@ private:
 
   void end_round(Swap_report& report)
   {
+    // Registrations erased during the round left their bits: start afresh.
+    if(!registered_.empty())
+    {
+      may_be_registered_.clear(registered_.size());
+      registered_.for_each([&](const Edge& e, const std::vector<std::uint32_t>&) { may_be_registered_.insert(e); });
+    }
     record_.cells = tr_.number_of_finite_cells();
     if(settings_.record_non_delaunay_facets)
       record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
@@ -411,17 +452,17 @@ private:
     // seeds). A cell that a flip touched is skipped: its facets that still
     // exist are queued for round 2.
     const bool seeded = !next_.empty();
+    either_side_ = sees_facet_from_either_side(visit);
     if(!seeded)
     {
       first_round_ = true;
       record_ = Cycle_record();
       record_.cycle = 1;
-      const bool either_side = sees_facet_from_either_side(visit);
       auto visit_cell = [&](Cell_handle c) {
-        if(tr_.is_infinite(c) || (!touched_.empty() && touched_.contains(c))) return;
+        if((record_.total_swaps() > 0 && (state(c) & TOUCHED)) || tr_.is_infinite(c)) return;
         for(int i = 0; i < 4; ++i)
         {
-          if(either_side)
+          if(either_side_)
           {
             const Cell_handle n = c->neighbor(i);
             if(address_of(n) < address_of(c) || tr_.is_infinite(n)) continue;
@@ -453,11 +494,11 @@ private:
       }
       current_cell_ = Cell_handle();
       first_round_ = false;
-      touched_.clear();
+      for(std::uint16_t& s : state_) s &= std::uint16_t(~TOUCHED);
       end_round(report);
     }
 
-    std::vector<Key> round;
+    std::vector<std::uint32_t> round;
     for(std::size_t r = seeded ? 1 : 2; r <= settings_.max_rounds + 1; ++r)
     {
       if(next_.empty())
@@ -471,16 +512,29 @@ private:
       if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(round, rng_);
       record_ = Cycle_record();
       record_.cycle = r;
-      for(const Key& key : round)
+      for(std::uint32_t slot : round)
       {
-        const Cell_handle* queued = queued_.find(key);
-        if(queued == nullptr) continue; // destroyed, or visited already in this round
-        const Cell_handle hint = *queued;
-        queued_.erase(key);
-        Cell_handle c;
-        int i;
-        if(!locate(key, hint, c, i)) continue;
-        if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
+        // Not queued any more: destroyed with its cell, or visited already
+        // (from either side) in this round. A slot that another cell took
+        // since is visited here if that cell queued the facet.
+        std::uint16_t& s = state_[slot / 4];
+        int i = int(slot % 4);
+        if(!(s & (QUEUED << i))) continue;
+        s &= std::uint16_t(~(QUEUED << i));
+        Cell_handle c = cell_in_slot(slot);
+        CGAL_assertion(c != Cell_handle()); // a cell's state goes with it
+        const Cell_handle n = c->neighbor(i);
+        const int j = n->index(c);
+        state(n) &= std::uint16_t(~(QUEUED << j));
+        if(tr_.is_infinite(c) || tr_.is_infinite(n)) continue;
+        // Seen from the cell that holds it (`holds_facet`): the helper's tags
+        // depend on the side a facet is classified from, and the side must not
+        // depend on the flips' history.
+        if(!either_side_ && !holds_facet(tr_, c, i))
+        {
+          c = n;
+          i = j;
+        }
         current_cell_ = c;
         current_index_ = i;
         visit_facet(visit, c, i);
@@ -500,14 +554,14 @@ private:
   bool queueing_ = false;
   bool first_round_ = false;
 
-  Flat_hash_set<Cell_handle, Handle_hash> tags_;
-  Flat_hash_set<Cell_handle, Handle_hash> touched_;            // round 1: cells flips changed
-  std::vector<Key> next_;                                      // the next round, in queueing order
-  Flat_hash_map<Key, Cell_handle, Facet_key_hash> queued_;     // queued, not yet visited: a cell that holds it
-  Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_;      // a cycle: facets flips changed (null: destroyed)
-  Flat_hash_set<Key, Facet_key_hash> kept_;                    // not Delaunay at their last visit
-  bool kept_overflow_ = false;                                 // kept_ grew too large and was dropped
-  Flat_hash_map<Edge, std::vector<Listed>, Edge_key_hash> registered_; // visit again when the edge's cells change
+  mutable Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> index_;
+  mutable std::vector<std::uint16_t> state_; // by slot: the bits above
+  bool any_tag_ = false;
+  bool either_side_ = false;                 // the rule sees a facet from either of its cells
+  std::vector<std::uint32_t> next_;          // the next round: slots of facets, in queueing order
+  Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_; // a cycle: facets flips changed (null: destroyed)
+  Flat_hash_map<Edge, std::vector<std::uint32_t>, Edge_key_hash> registered_; // visit again when the edge's cells change
+  Bit_filter<Edge, Edge_key_hash> may_be_registered_; // no false negatives: spares most lookups in registered_
   Cell_handle current_cell_; // the facet under visit
   int current_index_ = 0;
 };
