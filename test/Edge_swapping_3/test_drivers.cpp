@@ -240,6 +240,37 @@ TEST_CASE("Work queue: same Delaunay triangulation as the cycles, in fewer visit
   }
 }
 
+TEST_CASE("The slot index of cells is CGAL's own, through flips that free, reuse and add blocks", "[drivers]")
+{
+  const unsigned seed = 4;
+  INFO("3000 random points, seed " << seed);
+  Tr tr;
+  ES::insert_delaunay(tr, random_in_cube(3000, seed));
+  const auto& cells = tr.tds().cells();
+  ES::internal::Compact_container_index<Tr::Triangulation_data_structure::Cell_range> index(cells);
+  auto check_every_cell = [&] {
+    std::size_t live = 0;
+    for(auto c = cells.begin(); c != cells.end(); ++c, ++live)
+    {
+      const std::size_t k = index(c);
+      REQUIRE(k == std::size_t(cells.index(c)));
+      REQUIRE(index.item(k) == &*c);
+    }
+    REQUIRE(live == cells.size());
+    std::size_t free_slots = 0;
+    for(std::size_t k = 0; k < index.number_of_slots(); ++k) free_slots += (index.item(k) == nullptr);
+    REQUIRE(free_slots == index.number_of_slots() - cells.size());
+  };
+  check_every_cell();
+  const std::size_t capacity = cells.capacity();
+  // Random flips free cells and make new ones; points inserted without
+  // flips grow the container into blocks the index has not seen.
+  ES::scramble(tr, 3000, seed);
+  for(const auto& p : random_in_cube(3000, seed + 1)) tr.insert(p);
+  REQUIRE(cells.capacity() > capacity);
+  check_every_cell();
+}
+
 TEST_CASE("Work queue: a quality criterion ends on a local optimum - no swappable facet it prefers", "[drivers]")
 {
   for(unsigned seed = 1; seed <= 3; ++seed)
