@@ -164,13 +164,20 @@ public:
     std::size_t words = 64;
     while(64 * words < 8 * expected_keys) words *= 2; // about one bit in eight set
     words_.assign(words, 0);
+    set_bits_ = 0;
   }
   void insert(const Key& key)
   {
-    if(words_.empty()) clear(1 << 16);
+    if(words_.empty()) clear(1 << 13);
     const std::size_t b = bit_of(key);
-    words_[b / 64] |= std::uint64_t(1) << (b % 64);
+    std::uint64_t& word = words_[b / 64];
+    const std::uint64_t bit = std::uint64_t(1) << (b % 64);
+    if(!(word & bit)) ++set_bits_;
+    word |= bit;
   }
+  bool is_empty() const { return words_.empty(); }
+  /// Whether a sixteenth of the bits are set (as many absent keys pass).
+  bool is_crowded() const { return 16 * set_bits_ > 64 * words_.size(); }
   bool contains(const Key& key) const
   {
     if(words_.empty()) return false;
@@ -181,6 +188,7 @@ public:
 private:
   std::size_t bit_of(const Key& key) const { return std::size_t(mix_bits(Hash()(key))) & (64 * words_.size() - 1); }
   std::vector<std::uint64_t> words_;
+  std::size_t set_bits_ = 0;
 };
 
 } // namespace internal

@@ -22,7 +22,11 @@
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
+#include <algorithm>
+#include <array>
 #include <cstdint>
+#include <cstring>
+#include <deque>
 #include <functional>
 #include <stdexcept>
 #include <type_traits>
@@ -87,6 +91,28 @@ bool sees_facet_from_either_side(const Rule& rule)
   else return false;
 }
 
+/// A hash of an edge by the coordinates of its two points, in either order.
+struct Edge_point_hash
+{
+  template <class Point>
+  static std::uint64_t bits_of(const Point& p)
+  {
+    std::uint64_t h = 0;
+    for(const double x : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())})
+    {
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h = mix_bits(h ^ b);
+    }
+    return h;
+  }
+  template <class Key>
+  std::size_t operator()(const Key& e) const
+  {
+    return std::size_t(bits_of(e.a->point()) + bits_of(e.b->point()));
+  }
+};
+
 template <class Tr, class Constraints, class Visitor>
 class Swap_driver
 {
@@ -101,6 +127,7 @@ public:
   };
   typedef Edge_key<Tr> Edge;
   typedef Five_point_configuration<Tr> Configuration;
+  typedef std::uint16_t State; ///< a cell's bits in the driver (see QUEUED)
 
   Swap_driver(Tr& tr, const Driver_settings& settings, const Constraints& constraints, Visitor& visitor)
     : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed),
@@ -118,16 +145,16 @@ public:
   /// Tags `c` (the helper); a new tag queues the facets whose visit it may change.
   void tag(Cell_handle c)
   {
-    std::uint16_t& s = state(c);
+    State& s = state(c);
     if(s & TAGGED) return;
     s |= TAGGED;
     any_tag_ = true;
     ++record_.new_tags;
     if(!queueing_) return;
     for(int i = 0; i < 4; ++i) facet_changed(c, i);
-    if(!registered_.empty())
+    if(registered_facets_ > 0)
       for(int i = 0; i < 4; ++i)
-        for(int j = i + 1; j < 4; ++j) push_registered(c->vertex(i), c->vertex(j));
+        for(int j = i + 1; j < 4; ++j) push_registered(c, i, j);
   }
 
   /// Makes the flip of a swappable, fresh configuration; returns its kind.
@@ -143,8 +170,13 @@ public:
     for(int k = 0; k < plan.number_of_old_cells; ++k)
     {
       const Cell_handle c = plan.old_cells[k];
-      if(first_round_) state(c) = TOUCHED;
-      else if(!state_.empty()) state(c) = 0;
+      if(!state_.empty())
+      {
+        State& s = state(c);
+        queued_facets_ -= number_of_bits(s & (0xF * QUEUED));
+        registered_facets_ -= number_of_bits(s & (0xF * REGISTERED));
+        s = first_round_ ? TOUCHED : 0;
+      }
       if(!queueing_)
         for(int i = 0; i < 4; ++i)
           if(is_old_cell(plan, c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i)))
@@ -158,10 +190,21 @@ public:
       if(first_round_) state(created[k]) |= TOUCHED;
       for(int i = 0; i < 4; ++i) facet_changed(created[k], i);
     }
-    if(queueing_ && !registered_.empty())
+    if(queueing_ && registered_facets_ > 0)
+    {
+      // Each edge of the new cells once (a 2-3 flip makes 18 cell edges, 10 edges).
+      std::array<Edge, 24> done;
+      int number_done = 0;
       for(int k = 0; k < n; ++k)
         for(int i = 0; i < 4; ++i)
-          for(int j = i + 1; j < 4; ++j) push_registered(created[k]->vertex(i), created[k]->vertex(j));
+          for(int j = i + 1; j < 4; ++j)
+          {
+            const Edge e = edge_key<Tr>(created[k]->vertex(i), created[k]->vertex(j));
+            if(std::find(done.begin(), done.begin() + number_done, e) != done.begin() + number_done) continue;
+            done[number_done++] = e;
+            push_registered(created[k], i, j);
+          }
+    }
     ++record_.swaps[plan.kind];
     return int(plan.kind);
   }
@@ -177,16 +220,12 @@ public:
     if(!queueing_) return;
     const Cell_handle c = conf.cell();
     const int i = conf.index();
-    if(non_delaunay) state(c) |= std::uint16_t(KEPT << i);
+    if(non_delaunay) state(c) |= State(KEPT << i);
     Vertex_handle a, b;
     if(next_round)
       queue_facet(c, i);
     else if(conf.depends_on_edge_ring(a, b))
-    {
-      const Edge edge = edge_key<Tr>(a, b);
-      registered_[edge].push_back(facet_slot(index_(c), i));
-      may_be_registered_.insert(edge);
-    }
+      register_facet(c, i, a, b);
   }
 
   // ---- the schedules ----
@@ -269,17 +308,30 @@ private:
   // ---- per-cell state (slot-indexed) and the work queue ----
 
   // Bits of a cell's state: facet i queued from this cell (work queue), facet
-  // i not locally Delaunay at its last visit from this cell, tagged (helper),
+  // i not locally Delaunay at its last visit from this cell, facet i to visit
+  // again when the cells around one of its edges change, tagged (helper),
   // changed by a flip in round 1.
-  static constexpr std::uint16_t QUEUED = 1, KEPT = 1 << 4, TAGGED = 1 << 8, TOUCHED = 1 << 9;
+  static constexpr State QUEUED = 1, KEPT = 1 << 4, REGISTERED = 1 << 8, TAGGED = 1 << 12, TOUCHED = 1 << 13;
 
-  std::uint16_t& state_at(std::size_t k) const
+  static std::size_t number_of_bits(State s)
   {
-    if(k >= state_.size()) state_.resize(index_.number_of_slots(), 0);
+    std::size_t n = 0;
+    for(; s != 0; s &= s - 1) ++n;
+    return n;
+  }
+
+  State& state_at(std::size_t k) const
+  {
+    if(k >= state_.size())
+    {
+      // Exactly the container's slots: resize alone would double the capacity.
+      state_.reserve(index_.number_of_slots());
+      state_.resize(index_.number_of_slots(), 0);
+    }
     return state_[k];
   }
 
-  std::uint16_t& state(Cell_handle c) const { return state_at(index_(c)); }
+  State& state(Cell_handle c) const { return state_at(index_(c)); }
 
   /// A facet in the queue: the slot of a cell that held it, and its index there.
   static std::uint32_t facet_slot(std::size_t k, int i)
@@ -300,10 +352,37 @@ private:
     const Cell_handle n = c->neighbor(i);
     const std::size_t k = index_(c);
     if(state_at(index_(n)) & (QUEUED << n->index(c))) return;
-    std::uint16_t& sc = state_at(k);
+    State& sc = state_at(k);
     if(sc & (QUEUED << i)) return;
-    sc |= std::uint16_t(QUEUED << i);
-    next_.push_back(facet_slot(k, i));
+    sc |= State(QUEUED << i);
+    ++queued_facets_;
+    queue_.push_back(facet_slot(k, i));
+    // Entries of destroyed cells and of facets visited early pile up: past
+    // one and a half times the facets queued, the queue keeps only its live
+    // entries (a pass over the queue for every half of it pushed since).
+    if(2 * queue_.size() > 3 * queued_facets_ + 8192) compact_queue();
+  }
+
+  /// Drops the queue's dead entries in place (the first entry of each queued
+  /// facet stays, in order: the one a round would visit). The bits of the
+  /// entries kept are cleared on the way, so that later copies are dropped,
+  /// and set again at the end.
+  void compact_queue()
+  {
+    std::size_t kept = 0, kept_of_round = 0;
+    for(std::size_t k = 0; k < queue_.size(); ++k)
+    {
+      const std::uint32_t slot = queue_[k];
+      State& s = state_[slot / 4];
+      const State bit = State(QUEUED << (slot % 4));
+      if(!(s & bit)) continue;
+      s &= State(~bit);
+      if(k < round_left_) ++kept_of_round;
+      queue_[kept++] = slot;
+    }
+    queue_.resize(kept);
+    for(std::uint32_t slot : queue_) state_[slot / 4] |= State(QUEUED << (slot % 4));
+    round_left_ = kept_of_round;
   }
 
   /// Calls `f(c, i)` once for every facet kept (not Delaunay at its last visit).
@@ -319,7 +398,7 @@ private:
       {
         if(!(state_[k] & (KEPT << i))) continue;
         const Cell_handle n = c->neighbor(i);
-        if((state(n) & (KEPT << n->index(c))) && address_of(n) < address_of(c)) continue; // kept from n too
+        if((state(n) & (KEPT << n->index(c))) && index_(n) < k) continue; // kept from n too, listed there
         f(c, i);
       }
     }
@@ -356,25 +435,63 @@ private:
     return found;
   }
 
-  /// Queues the facets registered on edge `(a, b)`, whose cells changed. A
-  /// registered slot may hold another cell by now: its facet is then queued
-  /// for nothing (a visit too many, never one too few: the facet that was
-  /// registered lost its cell, whose successor queued it).
-  void push_registered(Vertex_handle a, Vertex_handle b)
+  /// Facet (c, i) is visited again when the cells around its edge (a, b)
+  /// change. The edge goes into a filter; the facet keeps a bit.
+  void register_facet(Cell_handle c, int i, Vertex_handle a, Vertex_handle b)
   {
-    if(registered_.empty()) return;
-    const Edge edge = edge_key<Tr>(a, b);
-    if(!may_be_registered_.contains(edge)) return;
-    const std::vector<std::uint32_t>* facets = registered_.find(edge);
-    if(facets == nullptr) return;
-    for(std::uint32_t slot : *facets)
+    State& s = state(c);
+    if(!(s & (REGISTERED << i)))
     {
-      const Cell_handle c = cell_in_slot(slot);
-      const int i = int(slot % 4);
-      if(c != Cell_handle() && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) && !is_current(c, i))
-        queue_facet(c, i);
+      s |= State(REGISTERED << i);
+      ++registered_facets_;
     }
-    registered_.erase(edge);
+    // Four bits per cell slot: a refill (a pass over the slots) waits for at
+    // least a quarter of the slots' worth of registrations.
+    if(may_be_registered_.is_empty()) may_be_registered_.clear(state_.size() / 2);
+    may_be_registered_.insert(edge_key<Tr>(a, b));
+    if(may_be_registered_.is_crowded()) refill_filter();
+  }
+
+  /// The filter again from the registered facets (all three edges of each),
+  /// when erased registrations have filled it.
+  void refill_filter()
+  {
+    may_be_registered_.clear(std::max(3 * registered_facets_, state_.size() / 2));
+    for(std::size_t k = 0; k < state_.size(); ++k)
+    {
+      if((state_[k] & (0xF * REGISTERED)) == 0) continue;
+      const Cell_handle c = cell_in_slot(std::uint32_t(4 * k));
+      for(int i = 0; i < 4; ++i)
+        if(state_[k] & (REGISTERED << i))
+          for(int u = 0; u < 4; ++u)
+            for(int v = u + 1; v < 4; ++v)
+              if(u != i && v != i) may_be_registered_.insert(edge_key<Tr>(c->vertex(u), c->vertex(v)));
+    }
+  }
+
+  /// Queues the registered facets around the edge (i, j) of `c`, whose cells
+  /// changed: the facets of the cells around the edge that contain it. Any
+  /// registered facet found there is queued, whichever of its edges it was
+  /// registered on (a visit too many, never one too few).
+  void push_registered(Cell_handle c, int i, int j)
+  {
+    const Vertex_handle a = c->vertex(i), b = c->vertex(j);
+    if(!may_be_registered_.contains(edge_key<Tr>(a, b))) return;
+    const auto start = tr_.incident_cells(c, i, j);
+    auto around = start;
+    do
+    {
+      const Cell_handle d = around;
+      const std::size_t slot = index_(d);
+      State found = state_at(slot) & (0xF * REGISTERED);
+      if(found == 0) continue;
+      found &= State(~((REGISTERED << d->index(a)) | (REGISTERED << d->index(b)))); // facets with the edge
+      state_[slot] &= State(~found);
+      registered_facets_ -= number_of_bits(found);
+      for(int k = 0; k < 4; ++k)
+        if((found & (REGISTERED << k)) && !tr_.is_infinite(d) && !tr_.is_infinite(d->neighbor(k)) && !is_current(d, k))
+          queue_facet(d, k);
+    } while(++around != start);
   }
 
   template <class Rule>
@@ -386,12 +503,6 @@ private:
 
   void end_round(Swap_report& report)
   {
-    // Registrations erased during the round left their bits: start afresh.
-    if(!registered_.empty())
-    {
-      may_be_registered_.clear(registered_.size());
-      registered_.for_each([&](const Edge& e, const std::vector<std::uint32_t>&) { may_be_registered_.insert(e); });
-    }
     record_.cells = tr_.number_of_finite_cells();
     if(settings_.record_non_delaunay_facets)
       record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
@@ -451,7 +562,7 @@ private:
     // Round 1: every interior facet, cell by cell (unless seeded: then the
     // seeds). A cell that a flip touched is skipped: its facets that still
     // exist are queued for round 2.
-    const bool seeded = !next_.empty();
+    const bool seeded = !queue_.empty();
     either_side_ = sees_facet_from_either_side(visit);
     if(!seeded)
     {
@@ -478,11 +589,17 @@ private:
       };
       if(settings_.face_order == RANDOM_ORDER)
       {
-        std::vector<Cell_handle> cells;
+        // The cells by slot (half the memory of handles); a slot that a
+        // flip freed is skipped, one it reused is touched.
+        std::vector<std::uint32_t> cells;
         cells.reserve(tr_.number_of_finite_cells());
-        for(Cell_handle c : tr_.finite_cell_handles()) cells.push_back(c);
+        for(Cell_handle c : tr_.finite_cell_handles()) cells.push_back(facet_slot(index_(c), 0) / 4);
         shuffle_uniformly(cells, rng_);
-        for(Cell_handle c : cells) visit_cell(c);
+        for(std::uint32_t k : cells)
+        {
+          const Cell_handle c = cell_in_slot(4 * k);
+          if(c != Cell_handle()) visit_cell(c);
+        }
       }
       else
       {
@@ -494,38 +611,42 @@ private:
       }
       current_cell_ = Cell_handle();
       first_round_ = false;
-      for(std::uint16_t& s : state_) s &= std::uint16_t(~TOUCHED);
+      for(State& s : state_) s &= State(~TOUCHED);
       end_round(report);
     }
 
-    std::vector<std::uint32_t> round;
     for(std::size_t r = seeded ? 1 : 2; r <= settings_.max_rounds + 1; ++r)
     {
-      if(next_.empty())
+      if(queue_.empty())
       {
         report.ending = CONVERGED;
         break;
       }
       if(r > settings_.max_rounds) break;
-      round.swap(next_);
-      next_.clear();
-      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(round, rng_);
+      // The queue holds this round; the next round's facets join it at the
+      // back as this round's leave the front.
+      round_left_ = queue_.size();
+      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(queue_, rng_);
       record_ = Cycle_record();
       record_.cycle = r;
-      for(std::uint32_t slot : round)
+      while(round_left_ > 0)
       {
+        --round_left_;
+        const std::uint32_t slot = queue_.front();
+        queue_.pop_front();
         // Not queued any more: destroyed with its cell, or visited already
         // (from either side) in this round. A slot that another cell took
         // since is visited here if that cell queued the facet.
-        std::uint16_t& s = state_[slot / 4];
+        State& s = state_[slot / 4];
         int i = int(slot % 4);
         if(!(s & (QUEUED << i))) continue;
-        s &= std::uint16_t(~(QUEUED << i));
+        s &= State(~(QUEUED << i));
+        --queued_facets_;
         Cell_handle c = cell_in_slot(slot);
         CGAL_assertion(c != Cell_handle()); // a cell's state goes with it
         const Cell_handle n = c->neighbor(i);
         const int j = n->index(c);
-        state(n) &= std::uint16_t(~(QUEUED << j));
+        CGAL_assertion(!(state(n) & (QUEUED << j))); // queued from one side only
         if(tr_.is_infinite(c) || tr_.is_infinite(n)) continue;
         // Seen from the cell that holds it (`holds_facet`): the helper's tags
         // depend on the side a facet is classified from, and the side must not
@@ -555,13 +676,18 @@ private:
   bool first_round_ = false;
 
   mutable Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> index_;
-  mutable std::vector<std::uint16_t> state_; // by slot: the bits above
+  mutable std::vector<State> state_; // by slot: the bits above
   bool any_tag_ = false;
   bool either_side_ = false;                 // the rule sees a facet from either of its cells
-  std::vector<std::uint32_t> next_;          // the next round: slots of facets, in queueing order
+  std::deque<std::uint32_t> queue_;          // facets as slot and index, in queueing order
+  std::size_t round_left_ = 0;               // entries of the round under way at the front of queue_
+  std::size_t queued_facets_ = 0;            // QUEUED bits set
   Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_; // a cycle: facets flips changed (null: destroyed)
-  Flat_hash_map<Edge, std::vector<std::uint32_t>, Edge_key_hash> registered_; // visit again when the edge's cells change
-  Bit_filter<Edge, Edge_key_hash> may_be_registered_; // no false negatives: spares most lookups in registered_
+  std::size_t registered_facets_ = 0;       // REGISTERED bits set
+  // Edges with a registered facet, and some others. Hashed by the points, not
+  // the addresses: which edges pass decides which facets are visited again,
+  // and a run must not depend on where the cells are in memory.
+  Bit_filter<Edge, Edge_point_hash> may_be_registered_;
   Cell_handle current_cell_; // the facet under visit
   int current_index_ = 0;
 };
