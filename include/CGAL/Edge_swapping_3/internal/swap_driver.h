@@ -456,7 +456,9 @@ private:
   /// when erased registrations have filled it.
   void refill_filter()
   {
-    may_be_registered_.clear(std::max(3 * registered_facets_, state_.size() / 2));
+    // Sized so that the refill leaves at most a thirty-second of the bits
+    // set (three edges per facet): refills never follow each other closely.
+    may_be_registered_.clear(std::max(12 * registered_facets_, state_.size() / 2));
     for(std::size_t k = 0; k < state_.size(); ++k)
     {
       if((state_[k] & (0xF * REGISTERED)) == 0) continue;
