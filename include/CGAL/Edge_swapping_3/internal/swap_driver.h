@@ -457,7 +457,8 @@ private:
   void refill_filter()
   {
     // Sized so that the refill leaves at most a thirty-second of the bits
-    // set (three edges per facet): refills never follow each other closely.
+    // set (three edges per facet): the next refill waits for at least as many
+    // insertions as there are bits set after this one.
     may_be_registered_.clear(std::max(12 * registered_facets_, state_.size() / 2));
     for(std::size_t k = 0; k < state_.size(); ++k)
     {
@@ -474,7 +475,7 @@ private:
   /// Queues the registered facets around the edge (i, j) of `c`, whose cells
   /// changed: the facets of the cells around the edge that contain it. Any
   /// registered facet found there is queued, whichever of its edges it was
-  /// registered on (a visit too many, never one too few).
+  /// registered on: a visit too many, not one too few.
   void push_registered(Cell_handle c, int i, int j)
   {
     const Vertex_handle a = c->vertex(i), b = c->vertex(j);
