@@ -7,6 +7,7 @@
 //   random  the same in random face order (a uniform permutation per round)
 //   helper  swap_edges_with_helper (work queue)
 //   cycles  swap_edges, the paper's cycles, no repair (the drivers up to issue 9 swept like this)
+//   rcycles the same in random face order (a uniform permutation of the facets per cycle)
 // Each result is compared with CGAL's, cell for cell. Memory: the bytes the
 // driver allocated beyond the triangulation at its peak (operator new counted).
 //
@@ -14,7 +15,7 @@
 // mesh (.node/.ele) against `cgal_delaunay_of_node`, which reads the same
 // points and writes CGAL's Delaunay mesh; each reads, computes and writes.
 //
-//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,helper,cycles] [--programs]
+//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,random,helper,cycles,rcycles] [--programs]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -109,6 +110,15 @@ int main(int argc, char** argv)
     else if(o == "--contenders") contenders = argv[a + 1];
     else { std::cerr << "unknown option " << o << '\n'; return 2; }
   }
+  {
+    std::stringstream names(contenders);
+    for(std::string name; std::getline(names, name, ',');)
+      if(name != "repair" && name != "random" && name != "helper" && name != "cycles" && name != "rcycles")
+      {
+        std::cerr << "--contenders: unknown contender '" << name << "'\n";
+        return 2;
+      }
+  }
   std::printf("%8s %6s %8s | %7s | %-7s %8s %6s %8s %6s %9s %-12s %5s | %8s %8s %6s\n", "points", "move", "moved",
               "CGAL s", "ours", "s", "ratio", "flips", "rounds", "visits", "path", "equal", "tri MiB", "drv MiB",
               "ratio");
@@ -141,6 +151,9 @@ int main(int argc, char** argv)
           if(name == "repair") r = CGAL::swap_edges(tr, ES::Delaunay_criterion());
           else if(name == "random") r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(ES::RANDOM_ORDER));
           else if(name == "helper") r = CGAL::swap_edges_with_helper(tr);
+          else if(name == "rcycles")
+            r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
+                                 np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, np::delaunay_repair(false))));
           else r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, np::delaunay_repair(false)));
           out[0] = r.seconds;
           out[6] = double(allocation_counter::peak) - triangulation_bytes;
@@ -149,11 +162,13 @@ int main(int argc, char** argv)
           out[1] = double(s[0] + s[1] + s[2] + s[3]);
           out[2] = double(r.number_of_cycles());
           out[3] = double(r.number_of_visits());
-          out[4] = (name == "repair" || name == "random") ? double(r.repair_path) : (r.ending == ES::CONVERGED ? 0 : -1);
+          out[4] = (name == "repair" || name == "random") ? double(r.repair_path) : -1.0 - double(r.ending);
           out[5] = ES::compare_with_delaunay(tr).identical ? 1 : 0;
         });
         const double* v = ours.values;
-        const char* path = v[4] < 0 ? "not ended" : (name == "repair" || name == "random" ? ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(v[4]))) : "converged");
+        // The repair's path, or the other drivers' ending.
+        const char* path = v[4] < 0 ? ES::swap_ending_name(ES::Swap_ending(int(-1.0 - v[4])))
+                                    : ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(v[4])));
         std::printf("%8zu %5.1f%% %8.0f | %7.3f | %-7s %8.3f %6.2f %8.0f %6.0f %9.0f %-12s %5s | %8.1f %8.1f %6.2f\n", n,
                     100 * f, cgal.values[1], cgal.values[0], name.c_str(), v[0], v[0] / cgal.values[0], v[1], v[2],
                     v[3], path, v[5] > 0 ? "yes" : "NO", v[7] / 1048576.0, v[6] / 1048576.0, (v[7] + v[6]) / v[7]);

@@ -129,6 +129,92 @@ TEST_CASE("Paper cycles: the helper driver makes the naive replay's swaps, cycle
   }
 }
 
+TEST_CASE("Paper cycles: a listed facet that flips destroy and make again is visited at its turn", "[drivers]")
+{
+  // The cycles list facets by cell slot; a facet destroyed and made again in
+  // the same cycle must be found again, as the naive replay (by vertices)
+  // finds it. The first visit of the cycle makes a 3-2 flip around an edge of
+  // degree 3 (destroying its three facets, all listed and not yet visited)
+  // and the 2-3 flip that undoes it: every listed facet is then visited once.
+  typedef std::array<Vertex_handle, 3> Triple;
+  auto triple = [](Cell_handle c, int i) {
+    Triple t = {c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+    std::sort(t.begin(), t.end(), [](Vertex_handle a, Vertex_handle b) { return &*a < &*b; });
+    return t;
+  };
+  for(auto order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER})
+  {
+    INFO("order " << int(order));
+    Tr tr;
+    ES::insert_delaunay(tr, random_in_cube(200, 11));
+    std::set<Triple> listed;
+    for(Cell_handle c : tr.finite_cell_handles())
+      for(int i = 0; i < 4; ++i)
+        if(ES::internal::holds_facet(tr, c, i)) listed.insert(triple(c, i));
+    ES::internal::Driver_settings settings;
+    settings.schedule = ES::PAPER_CYCLES;
+    settings.face_order = order;
+    settings.random_seed = 5;
+    settings.max_rounds = 1;
+    ES::Default_flip_visitor visitor;
+    const ES::No_constraints constraints;
+    ES::internal::Swap_driver<Tr, ES::No_constraints, ES::Default_flip_visitor> driver(tr, settings, constraints, visitor);
+    std::map<Triple, int> visits;
+    std::size_t made_again = 0;
+    auto rule = [&](auto& d, Cell_handle c, int i) {
+      ++visits[triple(c, i)];
+      if(made_again > 0) return;
+      for(Cell_handle x : tr.finite_cell_handles())
+        for(int f = 0; f < 4; ++f)
+        {
+          const auto conf = ES::classify_facet(tr, x, f);
+          if(!conf.is_swappable() || conf.flip_kind() != ES::FLIP_3_2) continue;
+          // Away from the facet under visit: its cells are not flipped.
+          bool touches_current = false;
+          for(int k = 0; k < 3; ++k)
+          {
+            const Cell_handle old = conf.flip_plan().old_cells[k];
+            touches_current = touches_current || old == c || old == c->neighbor(i);
+          }
+          if(touches_current) continue;
+          d.flip(conf);
+          // The new triangle: the facet the two new cells share.
+          Cell_handle a;
+          int j = 0;
+          for(Cell_handle y : tr.finite_cell_handles())
+            for(int g = 0; g < 4 && a == Cell_handle(); ++g)
+            {
+              const auto back = ES::classify_facet(tr, y, g);
+              if(back.is_swappable() && back.flip_kind() == ES::FLIP_2_3 && listed.count(triple(y, g)) == 0)
+              {
+                a = y;
+                j = g;
+              }
+            }
+          REQUIRE(a != Cell_handle());
+          d.flip(ES::classify_facet(tr, a, j));
+          made_again = 3;
+          return;
+        }
+    };
+    const auto report = driver.run(rule);
+    REQUIRE(made_again == 3);
+    REQUIRE(report.cycles.size() == 1);
+    REQUIRE(report.cycles[0].total_swaps() == 2);
+    std::set<Triple> now;
+    for(Cell_handle c : tr.finite_cell_handles())
+      for(int i = 0; i < 4; ++i)
+        if(ES::internal::holds_facet(tr, c, i)) now.insert(triple(c, i));
+    REQUIRE(now == listed); // the two flips undid each other
+    REQUIRE(visits.size() == listed.size());
+    for(const auto& [facet, count] : visits)
+    {
+      REQUIRE(listed.count(facet) == 1);
+      REQUIRE(count == 1);
+    }
+  }
+}
+
 TEST_CASE("Callbacks that run CGAL's traversals do not change a helper run", "[drivers]")
 {
   // Up to issue 9 the tags lived in the TDS marks, which incident_cells,

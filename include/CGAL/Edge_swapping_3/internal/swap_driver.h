@@ -28,6 +28,7 @@
 #include <cstring>
 #include <deque>
 #include <functional>
+#include <queue>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -113,6 +114,31 @@ struct Edge_point_hash
   }
 };
 
+/// A cell slot or a list entry as a hash key (the map mixes the bits).
+struct Slot_hash
+{
+  std::size_t operator()(std::uint32_t k) const { return k; }
+};
+
+/// A facet by the slots of its three vertices, in increasing order: half the
+/// size of a `Facet_key`, for tables that hold many facets.
+struct Vertex_slot_triple
+{
+  std::uint32_t a, b, c;
+  friend bool operator==(const Vertex_slot_triple& x, const Vertex_slot_triple& y)
+  {
+    return x.a == y.a && x.b == y.b && x.c == y.c;
+  }
+};
+
+struct Vertex_slot_triple_hash
+{
+  std::size_t operator()(const Vertex_slot_triple& t) const
+  {
+    return std::size_t((std::uint64_t(t.a) << 32 | t.b) ^ rotate_left(t.c, 17));
+  }
+};
+
 template <class Tr, class Constraints, class Visitor>
 class Swap_driver
 {
@@ -120,18 +146,13 @@ public:
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef Facet_key<Tr> Key;
-  struct Listed
-  {
-    Key key;
-    Cell_handle hint; // a cell that held the facet when it was listed
-  };
   typedef Edge_key<Tr> Edge;
   typedef Five_point_configuration<Tr> Configuration;
   typedef std::uint16_t State; ///< a cell's bits in the driver (see QUEUED)
 
   Swap_driver(Tr& tr, const Driver_settings& settings, const Constraints& constraints, Visitor& visitor)
     : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed),
-      index_(tr.tds().cells())
+      index_(tr.tds().cells()), vertex_index_(tr.tds().vertices())
   {}
 
   Tr& triangulation() { return tr_; }
@@ -167,29 +188,27 @@ public:
     // once); in round 1 they stay marked, so that a list of cells skips them.
     // In a cycle, the facets between two old cells are known dead (unless the
     // flip makes them again).
+    if(!queueing_)
+      for(int k = 0; k < plan.number_of_old_cells; ++k) move_listed_facets(plan, plan.old_cells[k]);
     for(int k = 0; k < plan.number_of_old_cells; ++k)
     {
-      const Cell_handle c = plan.old_cells[k];
-      if(!state_.empty())
-      {
-        State& s = state(c);
-        queued_facets_ -= number_of_bits(s & (0xF * QUEUED));
-        registered_facets_ -= number_of_bits(s & (0xF * REGISTERED));
-        s = first_round_ ? TOUCHED : 0;
-      }
-      if(!queueing_)
-        for(int i = 0; i < 4; ++i)
-          if(is_old_cell(plan, c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i)))
-            moved_[facet_key<Tr>(c, i)] = Cell_handle();
+      if(state_.empty()) break;
+      State& s = state(plan.old_cells[k]);
+      queued_facets_ -= number_of_bits(s & (0xF * QUEUED));
+      registered_facets_ -= number_of_bits(s & (0xF * REGISTERED));
+      s = first_round_ ? TOUCHED : 0;
     }
     std::array<Cell_handle, 4> created;
     const int n = execute_flip(tr_, plan, created, constraints_);
     unwrap(visitor_).after_flip(tr_, plan, created, n);
-    for(int k = 0; k < n; ++k)
-    {
-      if(first_round_) state(created[k]) |= TOUCHED;
-      for(int i = 0; i < 4; ++i) facet_changed(created[k], i);
-    }
+    if(!queueing_)
+      relist_made_again(created, n);
+    else
+      for(int k = 0; k < n; ++k)
+      {
+        if(first_round_) state(created[k]) |= TOUCHED;
+        for(int i = 0; i < 4; ++i) facet_changed(created[k], i);
+      }
     if(queueing_ && registered_facets_ > 0)
     {
       // Each edge of the new cells once (a 2-3 flip makes 18 cell edges, 10 edges).
@@ -312,6 +331,10 @@ private:
   // again when the cells around one of its edges change, tagged (helper),
   // changed by a flip in round 1.
   static constexpr State QUEUED = 1, KEPT = 1 << 4, REGISTERED = 1 << 8, TAGGED = 1 << 12, TOUCHED = 1 << 13;
+  // The paper's cycles use neither the queue nor the kept bits; there, facet i
+  // is listed in this cycle and not visited yet, and was moved to this cell
+  // by a flip (its entry is then found in `entry_of_`).
+  static constexpr State LISTED = QUEUED, MOVED_IN = KEPT;
 
   static std::size_t number_of_bits(State s)
   {
@@ -404,35 +427,12 @@ private:
     }
   }
 
-  /// A facet of a new (or newly tagged) cell: queued, or, in a cycle, found
-  /// there when its turn comes.
+  /// A facet of a new (or newly tagged) cell: queued (the work queue).
   void facet_changed(Cell_handle c, int i)
   {
-    if(!queueing_)
-    {
-      moved_[facet_key<Tr>(c, i)] = c;
-      return;
-    }
     if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) return;
     if(is_current(c, i)) return; // the visit under way has seen it
     queue_facet(c, i);
-  }
-
-  /// The facet of a listed or queued key: its hint when no flip changed it,
-  /// else where the last flip put it. It is then seen from the cell that holds
-  /// it (`holds_facet`): the helper's tags depend on the side a facet is
-  /// classified from, and the side must not depend on the flips' history.
-  bool locate(const Key& key, Cell_handle hint, Cell_handle& c, int& i) const
-  {
-    const bool found = find_facet(tr_, key, hint, c, i);
-    CGAL_assertion(found);
-    if(found && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) && !holds_facet(tr_, c, i))
-    {
-      const Cell_handle n = c->neighbor(i);
-      i = n->index(c);
-      c = n;
-    }
-    return found;
   }
 
   /// Facet (c, i) is visited again when the cells around its edge (a, b)
@@ -513,37 +513,183 @@ private:
     if(settings_.cycle_visitor) settings_.cycle_visitor(record_);
   }
 
+  // ---- the paper's cycles ----
+  //
+  // A cycle lists every interior facet once, as slot and index (4 bytes), and
+  // visits each at its turn if it still exists, whatever flips happened in
+  // between: a flip that destroys the cell a facet was listed from moves its
+  // entry to the cell across (`move_listed_facets`), and a facet destroyed and
+  // made again later in the cycle is found again (`relist_made_again`).
+  // Unvisited listed facets carry the LISTED bit where they are now; an entry
+  // that moved is forwarded through `moved_`, keyed by the entry.
+
+  /// The listed facets of `c`, a cell the flip of `plan` destroys.
+  void move_listed_facets(const Flip_plan<Tr>& plan, Cell_handle c)
+  {
+    const std::size_t k = index_(c);
+    const State s = state_at(k); // a copy: state_at may resize
+    if((s & (0xF * LISTED)) == 0) return;
+    for(int i = 0; i < 4; ++i)
+    {
+      if(!(s & (LISTED << i))) continue;
+      const std::uint32_t here = facet_slot(k, i);
+      std::uint32_t entry = here;
+      if(!(s & (MOVED_IN << i)))
+      {
+        if(settings_.face_order != RANDOM_ORDER) displaced_.push(entry); // it leaves its slot
+      }
+      else
+      {
+        const std::uint32_t* listed_as = entry_of_.find(here);
+        CGAL_assertion(listed_as != nullptr);
+        entry = *listed_as;
+        entry_of_.erase(here);
+      }
+      const Cell_handle n = c->neighbor(i);
+      if(is_old_cell(plan, n))
+      {
+        // Destroyed with the cavity (no longer found: not where it was
+        // listed, not moved); a later flip may make it again.
+        moved_.erase(entry);
+        made_again_.emplace(vertex_slots(c, i), entry);
+      }
+      else
+        list_at(n, n->index(c), entry); // on the cavity's boundary: n keeps it
+    }
+  }
+
+  /// The listed facets that the flip destroyed and made again: interior
+  /// facets of the new cells, found by their vertices.
+  void relist_made_again(const std::array<Cell_handle, 4>& created, int n)
+  {
+    if(made_again_.empty()) return;
+    for(int k = 0; k < n; ++k)
+      for(int i = 0; i < 4; ++i)
+      {
+        const Cell_handle d = created[k]->neighbor(i);
+        if(std::find(created.begin() + k + 1, created.begin() + n, d) == created.begin() + n) continue;
+        const Vertex_slot_triple key = vertex_slots(created[k], i);
+        if(const std::uint32_t* entry = made_again_.find(key))
+        {
+          list_at(created[k], i, *entry);
+          made_again_.erase(key);
+        }
+      }
+  }
+
+  Vertex_slot_triple vertex_slots(Cell_handle c, int i)
+  {
+    std::array<std::uint32_t, 3> t;
+    for(int k = 0; k < 3; ++k)
+    {
+      const std::size_t slot = vertex_index_(c->vertex((i + 1 + k) & 3));
+      if(slot >= (std::size_t(1) << 32)) throw std::length_error("Edge_swapping_3: more than 2^32 vertices");
+      t[k] = std::uint32_t(slot);
+    }
+    std::sort(t.begin(), t.end());
+    return {t[0], t[1], t[2]};
+  }
+
+  /// Facet (c, i) now answers the cycle's list entry `entry`.
+  void list_at(Cell_handle c, int i, std::uint32_t entry)
+  {
+    const std::size_t k = index_(c);
+    state_at(k) |= State((LISTED | MOVED_IN) << i);
+    const std::uint32_t here = facet_slot(k, i);
+    moved_[entry] = here;
+    entry_of_[here] = entry;
+  }
+
+  /// Whether list entry `entry` is where it was listed, not visited yet.
+  bool is_native(std::uint32_t entry) const
+  {
+    const State bits = State((state_[entry / 4] >> (entry % 4)) & (LISTED | MOVED_IN));
+    return bits == LISTED;
+  }
+
+  /// Visits the facet of list entry `entry` if it still exists.
+  template <class Rule>
+  void visit_listed(Rule& visit, std::uint32_t entry)
+  {
+    std::uint32_t here = entry;
+    if(!is_native(entry))
+    {
+      const std::uint32_t* moved = moved_.find(entry);
+      if(moved == nullptr) return; // a flip destroyed it
+      here = *moved;
+      moved_.erase(entry);
+      entry_of_.erase(here);
+    }
+    Cell_handle c = cell_in_slot(here);
+    int i = int(here % 4);
+    State& s = state_[here / 4];
+    CGAL_assertion(c != Cell_handle() && (s & (LISTED << i)));
+    s &= State(~((LISTED | MOVED_IN) << i));
+    if(!holds_facet(tr_, c, i))
+    {
+      const Cell_handle n = c->neighbor(i);
+      i = n->index(c);
+      c = n;
+    }
+    visit_facet(visit, c, i);
+  }
+
   template <class Rule>
   Swap_report run_cycles(Rule& visit)
   {
     queueing_ = false;
     Swap_report report;
     report.ending = CYCLE_LIMIT_REACHED;
-    std::vector<Listed> facets;
+    const bool random = settings_.face_order == RANDOM_ORDER;
+    // Random order: the entries, shuffled. A deque frees its front as the cycle
+    // consumes it, while the tables of moved facets grow.
+    std::deque<std::uint32_t> listed;
     for(std::size_t round = 1; round <= settings_.max_rounds; ++round)
     {
       record_ = Cycle_record();
       record_.cycle = round;
-      facets.clear();
-      facets.reserve(2 * tr_.number_of_cells());
       for(Cell_handle c : tr_.finite_cell_handles())
         for(int i = 0; i < 4; ++i)
-          if(holds_facet(tr_, c, i)) facets.push_back({facet_key<Tr>(c, i), c});
-      if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(facets, rng_);
-      moved_.clear();
-      for(const Listed& f : facets)
+          if(holds_facet(tr_, c, i))
+          {
+            const std::size_t k = index_(c);
+            state_at(k) |= State(LISTED << i);
+            if(random) listed.push_back(facet_slot(k, i));
+          }
+      if(random)
       {
-        Cell_handle hint = f.hint;
-        if(!moved_.empty())
+        shuffle_uniformly(listed, rng_);
+        while(!listed.empty())
         {
-          if(const Cell_handle* moved = moved_.find(f.key)) hint = *moved;
+          const std::uint32_t entry = listed.front();
+          listed.pop_front();
+          visit_listed(visit, entry);
         }
-        Cell_handle c;
-        int i;
-        if(hint == Cell_handle() || !locate(f.key, hint, c, i)) continue; // a flip destroyed it
-        if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
-        visit_facet(visit, c, i);
       }
+      else
+      {
+        // Storage order is slot order, so the list is the slots themselves:
+        // an entry is visited at its slot if it is still there, else when
+        // the slots reach it in `displaced_`.
+        const std::size_t slots = state_.size();
+        for(std::size_t k = 0; k < slots; ++k)
+          for(int i = 0; i < 4; ++i)
+          {
+            const std::uint32_t entry = std::uint32_t(4 * k + std::size_t(i));
+            if(!displaced_.empty() && displaced_.top() == entry)
+            {
+              displaced_.pop();
+              visit_listed(visit, entry);
+            }
+            else if(is_native(entry))
+              visit_listed(visit, entry);
+          }
+        CGAL_assertion(displaced_.empty());
+      }
+      // Their storage goes too: the next cycle's list would be held beside it.
+      moved_ = {};
+      entry_of_ = {};
+      made_again_ = {};
       end_round(report);
       // A round that tagged a cell changed what the next would do.
       if(record_.total_swaps() == 0 && record_.new_tags == 0)
@@ -685,7 +831,15 @@ private:
   std::deque<std::uint32_t> queue_;          // facets as slot and index, in queueing order
   std::size_t round_left_ = 0;               // entries of the round under way at the front of queue_
   std::size_t queued_facets_ = 0;            // QUEUED bits set
-  Flat_hash_map<Key, Cell_handle, Facet_key_hash> moved_; // a cycle: facets flips changed (null: destroyed)
+  // A cycle: where flips moved list entries (a destroyed entry is neither here
+  // nor where it was listed), the entry of each moved facet, and the entries of
+  // destroyed facets by their vertices.
+  Flat_hash_map<std::uint32_t, std::uint32_t, Slot_hash> moved_;
+  Flat_hash_map<std::uint32_t, std::uint32_t, Slot_hash> entry_of_;
+  // Storage order: the entries that left their slot, smallest first.
+  std::priority_queue<std::uint32_t, std::vector<std::uint32_t>, std::greater<std::uint32_t>> displaced_;
+  Flat_hash_map<Vertex_slot_triple, std::uint32_t, Vertex_slot_triple_hash> made_again_;
+  Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_index_;
   std::size_t registered_facets_ = 0;       // REGISTERED bits set
   // Edges with a registered facet, and some others. Hashed by the points, not
   // the addresses: which edges pass decides which facets are visited again,
