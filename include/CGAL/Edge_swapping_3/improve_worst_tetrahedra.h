@@ -20,6 +20,7 @@
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
+#include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
@@ -27,8 +28,11 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
+#include <limits>
 #include <queue>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -72,16 +76,18 @@ struct Quality_report
 
 namespace internal {
 
-template <class Tr>
+/// A cell in the heap: its score (larger is better) rounded to float, and its
+/// slot. Eight bytes, for a heap that starts with every cell: the score only
+/// schedules (every decision is the criterion's own), and ties go to the
+/// smaller slot, which no address decides.
 struct Worst_cell_entry
 {
-  double score; // larger is better
-  std::size_t order; // ties: first pushed, first taken (no address decides)
-  std::array<typename Tr::Vertex_handle, 4> vertices;
+  float score;
+  std::uint32_t slot;
 
   bool operator<(const Worst_cell_entry& other) const // std::priority_queue keeps the largest on top
   {
-    return score != other.score ? score > other.score : order > other.order;
+    return score != other.score ? score > other.score : slot > other.slot;
   }
 };
 
@@ -141,7 +147,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Tr::Cell_handle Cell_handle;
-  typedef internal::Worst_cell_entry<Tr> Entry;
+  typedef internal::Worst_cell_entry Entry;
   CGAL_precondition(tr.dimension() == 3);
   const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
@@ -171,13 +177,31 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       if(counted(c)) w = (std::min)(w, score(c));
     return larger_is_worse ? -w : w;
   };
+  // Each cell is in the heap at most once while it waits (`waiting`, by
+  // slot): a cell pushed again while it waits is skipped, not measured. An
+  // entry is taken only if its slot still waits and holds a cell of the same
+  // score: a cell made in a freed slot, or one whose vertex moved, is pushed
+  // anew (`changed`), and its older entries are passed over.
+  internal::Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> slots(tr.tds().cells());
+  std::vector<std::uint8_t> waiting;
+  auto waiting_at = [&](std::size_t k) -> std::uint8_t& {
+    if(k >= waiting.size()) waiting.resize((std::max)(slots.number_of_slots(), k + 1), 0);
+    return waiting[k];
+  };
+  auto entry_of = [&](Cell_handle c, double s) {
+    const std::size_t k = slots(c);
+    if(k > std::numeric_limits<std::uint32_t>::max()) throw std::length_error("Edge_swapping_3: more than 2^32 cells");
+    return Entry{float(s), std::uint32_t(k)};
+  };
   std::priority_queue<Entry> heap;
-  std::size_t pushed = 0;
-  auto push = [&](Cell_handle c) {
-    if(!counted(c)) return;
+  auto push = [&](Cell_handle c, bool changed) {
+    std::uint8_t& w = waiting_at(slots(c));
+    if(changed) w = 0;
+    if(w || !counted(c)) return;
     const double s = score(c);
     if(s >= enough) return;
-    heap.push(Entry{s, pushed++, {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
+    w = 1;
+    heap.push(entry_of(c, s));
   };
   // The cells whose operations may have changed, each pushed once. With edge
   // removal alone: those sharing an edge with a new cell (the ring of that
@@ -233,13 +257,27 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
             while(++circ != done);
           }
       }
-    internal::keep_first_occurrences(around);
-    for(Cell_handle c : around) push(c);
+    for(Cell_handle c : created) push(c, true);
+    for(Cell_handle c : around) push(c, false);
   };
 
   Quality_report report;
   report.worst_before = worst();
-  for(Cell_handle c : tr.finite_cell_handles()) push(c);
+  {
+    // The first heap in one piece, with room for the cells pushed again
+    // before the first ones are taken: a heap that doubles holds both copies.
+    std::vector<Entry> first;
+    first.reserve(tr.number_of_finite_cells() + tr.number_of_finite_cells() / 4);
+    for(Cell_handle c : tr.finite_cell_handles())
+    {
+      if(!counted(c)) continue;
+      const double s = score(c);
+      if(s >= enough) continue;
+      waiting_at(slots(c)) = 1;
+      first.push_back(entry_of(c, s));
+    }
+    heap = std::priority_queue<Entry>(std::less<Entry>(), std::move(first));
+  }
   std::vector<Cell_handle> created;
   internal::Edge_removal_failures<Tr> failures;
   internal::Multi_face_removal_failures<Tr> face_failures;
@@ -279,7 +317,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     {
       if(report.smoothing_moves == moves_at_sweep) break;
       moves_at_sweep = report.smoothing_moves;
-      for(Cell_handle c : tr.finite_cell_handles()) push(c);
+      for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
     }
     if(report.number_of_operations() >= limit)
     {
@@ -288,8 +326,11 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     }
     const Entry entry = heap.top();
     heap.pop();
-    Cell_handle c;
-    if(!tr.is_cell(entry.vertices[0], entry.vertices[1], entry.vertices[2], entry.vertices[3], c)) continue;
+    typename Tr::Cell* cell = slots.item(entry.slot);
+    if(cell == nullptr || !waiting[entry.slot]) continue;
+    const Cell_handle c = tr.tds().cells().iterator_to(*cell);
+    if(!counted(c) || float(score(c)) != entry.score) continue; // an older entry of the slot
+    waiting[entry.slot] = 0;
     ++report.visits;
     created.clear();
     bool improved = false, moved = false;
@@ -371,7 +412,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       if(!settled.empty())
         for(Cell_handle n : created)
           for(int i = 0; i < 4; ++i) settled.erase(n->vertex(i));
-      if(moved) for(Cell_handle n : created) push(n);
+      if(moved) for(Cell_handle n : created) push(n, true);
       else push_around(created);
     }
     else ++report.stuck;
