@@ -186,8 +186,7 @@ public:
     unwrap(visitor_).before_flip(tr_, plan);
     // The old cells' state goes with them (their slots may be reused at
     // once); in round 1 they stay marked, so that a list of cells skips them.
-    // In a cycle, the facets between two old cells are known dead (unless the
-    // flip makes them again).
+    // In a cycle, their listed facets move to the cells across first.
     if(!queueing_)
       for(int k = 0; k < plan.number_of_old_cells; ++k) move_listed_facets(plan, plan.old_cells[k]);
     for(int k = 0; k < plan.number_of_old_cells; ++k)
