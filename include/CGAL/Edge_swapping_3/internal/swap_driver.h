@@ -7,8 +7,9 @@
 //    visit, so a round costs what the flips before it changed.
 // Driver state (the helper's tags, the queue) is kept here, in arrays indexed
 // by the cells' slot numbers, never in the TDS marks that CGAL's own
-// traversals clear. The paper's cycles name a facet by its three vertices,
-// as the paper does; the work queue names it by a cell and an index.
+// traversals clear. Both name a facet by a cell slot and an index; the
+// paper's cycles follow a listed facet across the flips that replace its cell,
+// so that it is visited whenever a facet with its three vertices exists.
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
