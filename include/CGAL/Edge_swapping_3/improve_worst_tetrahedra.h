@@ -329,7 +329,10 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     typename Tr::Cell* cell = slots.item(entry.slot);
     if(cell == nullptr || !waiting[entry.slot]) continue;
     const Cell_handle c = tr.tds().cells().iterator_to(*cell);
-    if(!counted(c) || float(score(c)) != entry.score) continue; // an older entry of the slot
+    if(!counted(c)) continue;
+    const float now = float(score(c));
+    // An older entry of the slot is passed over (NaN: a degenerate cell's measure).
+    if(now != entry.score && !(now != now && entry.score != entry.score)) continue;
     waiting[entry.slot] = 0;
     ++report.visits;
     created.clear();
