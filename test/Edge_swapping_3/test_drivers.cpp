@@ -546,6 +546,35 @@ TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")
   REQUIRE(report.cycles.back().new_tags == 0);
 }
 
+TEST_CASE("Work queue: a run that the round limit ends reports the facets left exactly", "[drivers]")
+{
+  // Up to stop 21 the count after a work-queue run came from the facets kept
+  // at their last visit only: when the round limit ended the run, the facets
+  // changed since (still queued) were missed (602 reported, 6,157 left, for
+  // the helper from a placing start of 3,000 points after one round).
+  const auto points = random_in_cube(1500, 4);
+  for(std::size_t rounds : {1, 2, 3})
+  {
+    INFO(rounds << " rounds");
+    Tr helped, plain;
+    ES::insert_by_placing(helped, points);
+    ES::insert_by_placing(plain, points);
+    const auto h = CGAL::swap_edges_with_helper(helped, CGAL::parameters::number_of_iterations(rounds));
+    REQUIRE(h.ending == ES::CYCLE_LIMIT_REACHED);
+    REQUIRE(h.non_delaunay_facets == (long long)ES::number_of_non_delaunay_facets(helped));
+    const auto p = CGAL::swap_edges(plain, ES::Delaunay_criterion(),
+                                    np::delaunay_repair(false, CGAL::parameters::number_of_iterations(rounds)));
+    REQUIRE(p.ending == ES::CYCLE_LIMIT_REACHED);
+    REQUIRE(p.non_delaunay_facets == (long long)ES::number_of_non_delaunay_facets(plain));
+    // The repair from the same limit: its helper step starts from every facet left.
+    Tr repaired;
+    ES::insert_by_placing(repaired, points);
+    const auto r = CGAL::swap_edges(repaired, ES::Delaunay_criterion(), CGAL::parameters::number_of_iterations(rounds));
+    REQUIRE(r.ending == ES::CONVERGED);
+    REQUIRE(ES::compare_with_delaunay(repaired).identical);
+  }
+}
+
 TEST_CASE("A visitor with state of its own is passed through std::ref", "[drivers]")
 {
   struct Counter

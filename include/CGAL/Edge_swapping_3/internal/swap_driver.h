@@ -276,12 +276,13 @@ public:
   }
 
   /// After a work-queue run: the interior facets that are not locally
-  /// Delaunay. Every facet was visited in its last configuration, so they
-  /// are among those kept (not Delaunay at their last visit).
+  /// Delaunay. A facet visited in its last configuration is among those kept
+  /// (not Delaunay at their last visit); one changed since, when the round
+  /// limit ended the run, is still queued.
   std::vector<Key> non_delaunay_facets_kept() const
   {
     std::vector<Key> facets;
-    for_each_kept_facet([&](Cell_handle c, int i) {
+    for_each_kept_or_queued_facet([&](Cell_handle c, int i) {
       if(!tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)) &&
          !is_locally_delaunay(tr_, c, i, settings_.perturbation))
         facets.push_back(facet_key<Tr>(c, i));
@@ -289,12 +290,12 @@ public:
     return facets;
   }
 
-  /// After a work-queue run: the facets that were not locally Delaunay at
-  /// their last visit and still are (exact), plus the hull facets.
+  /// After a work-queue run: the facets kept or still queued that are not
+  /// locally Delaunay (exact), plus the hull facets that are not.
   std::size_t number_of_non_delaunay_facets_left() const
   {
     std::size_t n = 0;
-    for_each_kept_facet([&](Cell_handle c, int i) {
+    for_each_kept_or_queued_facet([&](Cell_handle c, int i) {
       if(!is_locally_delaunay(tr_, c, i, settings_.perturbation)) ++n;
     });
     std::vector<Cell_handle> outside;
@@ -408,20 +409,23 @@ private:
     round_left_ = kept_of_round;
   }
 
-  /// Calls `f(c, i)` once for every facet kept (not Delaunay at its last visit).
+  /// Calls `f(c, i)` once for every facet kept (not Delaunay at its last
+  /// visit) or queued (changed since; the queue is empty unless the round
+  /// limit ended the run): together, every facet that may not be Delaunay.
   template <class F>
-  void for_each_kept_facet(F f) const
+  void for_each_kept_or_queued_facet(F f) const
   {
+    auto marked = [](State s, int i) { return (s & ((KEPT | QUEUED) << i)) != 0; };
     for(std::size_t k = 0; k < state_.size(); ++k)
     {
-      if((state_[k] & (0xF * KEPT)) == 0) continue;
+      if((state_[k] & (0xF * (KEPT | QUEUED))) == 0) continue;
       const Cell_handle c = cell_in_slot(std::uint32_t(4 * k));
       if(c == Cell_handle()) continue;
       for(int i = 0; i < 4; ++i)
       {
-        if(!(state_[k] & (KEPT << i))) continue;
+        if(!marked(state_[k], i)) continue;
         const Cell_handle n = c->neighbor(i);
-        if((state(n) & (KEPT << n->index(c))) && index_(n) < k) continue; // kept from n too, listed there
+        if(marked(state(n), n->index(c)) && index_(n) < k) continue; // marked from n too, listed there
         f(c, i);
       }
     }
