@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # README command 2: install what is missing, build everything in Release, run the whole test suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."

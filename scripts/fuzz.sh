@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzzes the readers: builds one libFuzzer target per reader with clang
 # (AddressSanitizer and UndefinedBehaviorSanitizer) and runs each for
 # SECONDS (default 60), from the seed corpus in test/Edge_swapping_3/fuzz/corpus.

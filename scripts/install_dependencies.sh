@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Debian packages Edge_swapping_3 needs, only those missing,
 # and the packages named as arguments (the fuzz and sanitizer scripts add
 # clang). Run as root on Debian 12 (apt-get). Called by the two README commands.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs edge_swap for the conjecture laboratory's figures and draws them with
 # matplotlib (Debian's python3-matplotlib, hence /usr/bin/python3) into
 # doc/Edge_swapping_3/figures/. Needs a Release build in build/. About 10 minutes here.

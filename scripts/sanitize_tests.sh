@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer
 # (g++), the program included: too slow for CI on two cores, so run by hand
 # before closing work on the readers, the flips or the drivers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counts the bytes a benchmark holds through operator new, and their peak, so
 // that a driver's own memory can be told from the triangulation's. Include in
 // one translation unit only: it replaces the global operator new and delete.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the benchmarks: run a contender in a child process of its own
 // (so its peak memory is its own), the random points, and TetGen's Delaunay.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): the mesh pipeline. The Delaunay mesh of N random
 // points written and read in each format (TetGen .node/.ele, Medit .mesh,
 // VTK .vtu), then built into a Triangulation_3 and validated exactly once;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): the helper strategy from a placing start to the
 // Delaunay triangulation, beside CGAL's Delaunay_triangulation_3 and TetGen's
 // Delaunay on the same points, in one run. Each contender runs in a child

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): a Delaunay triangulation built from scratch by
 // flip-based insertion in spatial order, beside CGAL's Delaunay_triangulation_3
 // (Bowyer-Watson) and TetGen on the same points, in one run, each in its own

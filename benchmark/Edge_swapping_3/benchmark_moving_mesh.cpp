@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): repairing a moving mesh. The Delaunay triangulation
 // of N random points; every point off the hull moved by up to F times the mean
 // edge length in a random direction, unless the move would invert one of its

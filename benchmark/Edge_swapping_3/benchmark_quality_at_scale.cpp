@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): a quality criterion at scale. From CGAL's Delaunay
 // triangulation of N random points, `swap_edges` with the MinMax dihedral
 // criterion (work queue, storage order) to its local optimum; beside CGAL's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmark (not a test): the quality operations on the inputs of issue 11,
 // beside the peers on the same meshes (quality_peers.h). Inputs: the
 // two-spheres domain mesh (`edge_swap mesh-domain two-spheres`, measured on

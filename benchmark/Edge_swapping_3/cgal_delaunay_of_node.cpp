@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The whole-program reference of benchmark_moving_mesh: reads the points of a
 // TetGen .node file, builds CGAL's Delaunay_triangulation_3 of them and
 // writes it as Y.node and Y.ele, with the package's reader and writers.

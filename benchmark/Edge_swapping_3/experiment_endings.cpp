@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Experiment: how plain Algorithm 3 and the helper strategy end from placing
 // starts, over many seeds, in storage and in random face order.
 //

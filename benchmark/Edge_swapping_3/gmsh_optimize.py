@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Gmsh's tetrahedral optimizer (swaps and vertex relocation) on a Medit mesh:
 the Gmsh peer of benchmark_quality_operations. Run by Debian's interpreter,
 which has Debian's python3-gmsh:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Draws the smallest kept cases of the conjecture laboratory: each mesh with
 its facets that are not locally Delaunay in red. The meshes are the ends of the
 runs in conjectures.md (TetGen .node/.ele with integer coordinates, so the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Draws the conjecture laboratory's figures (scripts/make_conjecture_figures.sh
 runs it): swaps per cycle for 500, 1,000, 8,000 and 10,000 random points,
 plain and helper, each normalized to its largest cycle (the paper's Figs. 8

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Draws the paper's figures for our runs from what edge_swap writes
 (scripts/make_figures.sh runs both). Usage: plot_figures.py DATA_DIR OUT_DIR"""
 import csv, json, sys, xml.etree.ElementTree as ET

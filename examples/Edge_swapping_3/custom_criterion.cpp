@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A swap criterion of one's own: any function object that, given a swappable
 // five-point configuration, says whether its alternative triangulation is
 // better. Here: prefer the triangulation whose largest cell volume is smaller

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // From an arbitrary triangulation to the Delaunay triangulation by edge
 // swapping with the helper strategy, checked against CGAL cell for cell.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Mesh optimization by the MinMax dihedral-angle criterion (paper section 4):
 // the largest dihedral angle of the mesh never grows.
 

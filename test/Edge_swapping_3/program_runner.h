@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs the edge_swap program as a user would, in a scratch directory of its own.
 
 #ifndef EDGE_SWAPPING_3_PROGRAM_RUNNER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the tests: the triangulation type, input families drawn from a
 // printed seed, and exact comparisons of cell sets and volumes.
 

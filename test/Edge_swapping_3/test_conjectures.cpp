@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The conjecture laboratory: the kept cases (Joe's stuck plain swapping, the
 // helper strategy cycling in storage order), TOPCOM's formats and an
 // exhaustive small case through `edge_swap experiment`, resuming, shards,

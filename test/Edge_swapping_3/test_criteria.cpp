@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The quality criteria: the quantity each optimizes never gets worse, cycle
 // after cycle, and the result stays a valid triangulation. Minimum edges
 // reproduces the paper's reduction.

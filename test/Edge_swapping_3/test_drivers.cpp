@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The drivers' schedules and their exact semantics: the paper's cycles checked
 // against a naive replay written here, the work queue against the cycles, the
 // per-flip visitor, the uniform permutation, and the Delaunay repair.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exactness against CGAL's Delaunay_triangulation_3, cell for cell: the helper
 // strategy from placing and scrambled starts, and plain Algorithm 3, on random
 // and degenerate families. Every random input prints its seed.

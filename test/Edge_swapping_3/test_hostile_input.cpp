@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile input: each defect found by fuzzing and fault injection, as a case
 // that failed before. Bad input means exit 2, a message that names the file,
 // the line or the option and the problem, and no output file.

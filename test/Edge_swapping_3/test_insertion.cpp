@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Flip-based insertion (paper section 5): one point at a time with plain
 // flips ends on CGAL's Delaunay_triangulation_3, cell for cell (the paper's
 // second conjecture, Joe's theorem), wherever the point falls.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The edge_swap program, run as a user would: every bad input or option gives
 // exit 2, a message that names the problem, and no output file at all.
 

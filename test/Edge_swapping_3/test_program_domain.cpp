@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The program's insertion, refinement, statistics and domain commands, and
 // the Medit, VTK and TetGen-attribute files: round trips, domain integrity
 // (boundary triangles and flow region unchanged, sites inside), bad files.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The quality operations. Edge removal: hand-built rings of 3 to 7
 // tetrahedra with exact coordinates, Klincsek's dynamic program against every
 // triangulation of the ring, constraints, the hull, and random sequences of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Deterministic mutation testing of every reader (the CI-sized cousin of
 // scripts/fuzz.sh): each seed file of test/Edge_swapping_3/fuzz/corpus is
 // mutated a few thousand times, from a seed that a failure prints

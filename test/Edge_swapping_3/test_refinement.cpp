@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Refinement at circumcenters (aspect ratio and gradient) and domain meshes:
 // targets reached, sites only inside the domain, constrained facets and
 // subdomains unchanged by swaps and insertions.

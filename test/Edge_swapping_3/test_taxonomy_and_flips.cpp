@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The five-point taxonomy (paper Figs. 6 and 7) on exact integer
 // configurations, the flips between the two triangulations, and random flip
 // sequences that must keep the triangulation valid and its volume exact.

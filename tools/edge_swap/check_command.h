@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap check: is a mesh a valid triangulation, how Delaunay is it, and
 // is it CGAL's Delaunay triangulation.
 

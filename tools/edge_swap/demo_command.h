@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap demo: the paper's main experiments on random points in a unit cube.
 
 #ifndef EDGE_SWAP_DEMO_COMMAND_H

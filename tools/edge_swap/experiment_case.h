@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One case of the conjecture laboratory: points, a start triangulation, a
 // strategy (plain Algorithm 3, the helper strategy, or insertion one point at
 // a time with plain swaps after each) and a face order; running it exactly,

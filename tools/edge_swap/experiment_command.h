@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap experiment: the conjecture laboratory. Enumerates instances
 // (point family, size, seed, start, strategy, face order), runs them on all
 // cores, appends one JSON line per instance to the output (so a stopped run

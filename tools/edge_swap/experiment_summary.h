@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An experiment's results file (JSON lines, one per instance): reading it
 // with every line checked, and its summary per family, start, strategy and
 // order, and per point set of TOPCOM starts.

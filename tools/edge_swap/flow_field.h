@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The synthetic flow field of the two-spheres demo (the paper's Fig. 12 case,
 // without a flow solver): free stream along +x at unit speed and density, a
 // bow-shock-like jump a little ahead of each sphere, bent downstream away

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Huge pages for the program's heap, through glibc's own switch.
 //
 // A mesh of a million points takes about a gigabyte. On this project's

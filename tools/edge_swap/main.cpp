@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap: the command-line program of Edge_swapping_3. Parses options,
 // reads, calls the library, writes. Exit 2 for bad options or input. It first
 // starts itself again with glibc's huge pages (huge_pages.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap mesh-domain two-spheres: CGAL Mesh_3 meshes the flow region of
 // the paper's Fig. 12 case, a box around two spheres on the flow axis. The
 // box edges are protected as features, so the box stays a box; the spheres

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap mesh-domain: a domain mesh made by CGAL's Mesh_3 (in a
 // translation unit of its own: Mesh_3 is heavy to compile).
 

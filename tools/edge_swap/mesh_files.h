@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading the program's input (TetGen .node/.ele, Medit .mesh, VTK .vtu) and
 // adding its mesh outputs to the files written all or nothing.
 

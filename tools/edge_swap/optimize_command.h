@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap optimize: build or read a triangulation, run a driver, write the result.
 
 #ifndef EDGE_SWAP_OPTIMIZE_COMMAND_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The program's outputs, all or nothing. Every output path is checked before
 // any work (not a directory, a folder that exists and can be written, no two
 // outputs the same). Each file is written to a temporary

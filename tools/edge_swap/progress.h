@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Progress on standard error: at most a line a second, from the first second on.
 
 #ifndef EDGE_SWAP_PROGRESS_H

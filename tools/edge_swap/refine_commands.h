@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap insert, refine and stats: flip-based insertion of given points,
 // refinement at circumcenters (by aspect ratio or by a field's gradient),
 // and the quality figures of a mesh.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // edge_swap shrink: removes points from a saved case while it still fails;
 // edge_swap replay: runs a saved case again.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs TOPCOM (Debian's topcom package) on a point set and reads every fine
 // triangulation it enumerates.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The triangulation the program works on: each vertex remembers the number of
 // its point, so that point i of the input is point i of the output (new
 // points are numbered after the input's).

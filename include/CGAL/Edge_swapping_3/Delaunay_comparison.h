@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact verification: compares a triangulation with CGAL's own
 // Delaunay_triangulation_3 of the same points, cell for cell.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Delaunay (InSphere) swap criterion and the local Delaunay test of a facet.
 
 #ifndef CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's five-point taxonomy (Figs. 6 and 7, appendix B): what the five
 // vertices of the two tetrahedra on either side of an interior facet look
 // like, whether they admit a second triangulation, and which one. This is the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A flip planned on a Triangulation_3: the cells it removes and the vertex
 // tuples of the cells it creates, with the exact test that the result is a
 // valid triangulation, and the combinatorial surgery that carries it out.

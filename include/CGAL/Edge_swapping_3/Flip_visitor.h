@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The per-flip visitor of the swap drivers (model of `FlipVisitor_3`), in the
 // spirit of Tetrahedral_remeshing's visitor: users carry their own cell data
 // and fields through flips.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a local transformation must respect in a domain mesh: constrained
 // facets (boundaries and interfaces) are never removed, cells of different
 // subdomains are never joined, and the data of cells and facets (subdomain

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Swap criteria that compare the worst tetrahedron of the current and the
 // alternative triangulation of a configuration: MinMax and MaxMin dihedral
 // angle, and aspect ratio (both of the paper's definitions).

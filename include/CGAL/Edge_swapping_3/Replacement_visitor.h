@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The visitor of the quality operations (model of `ReplacementVisitor_3`):
 // edge removal, two-step edge removal and multi-face removal replace a set of
 // cells by new ones, the quality driver's flips too, and smoothing moves a

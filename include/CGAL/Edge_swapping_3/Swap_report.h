@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a swap driver reports: the rounds it made, how it ended, and, for the
 // Delaunay repair, which path it took.
 

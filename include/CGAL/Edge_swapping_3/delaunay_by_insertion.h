@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A Delaunay triangulation built from scratch by flip-based insertion: points
 // in CGAL's spatial order (Hilbert with BRIO), each located by walking from
 // the previous one, split in, and flipped outward (paper section 5).

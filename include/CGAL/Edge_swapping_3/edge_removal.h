@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Edge removal (Shewchuk, "Two discrete optimization algorithms for the
 // topological improvement of tetrahedral meshes", 2002): the n tetrahedra
 // around an edge ab are replaced by the 2n-4 tetrahedra that join a and b to

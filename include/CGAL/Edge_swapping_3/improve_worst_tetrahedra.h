@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The quality driver: hill climbing on the worst tetrahedra first. A heap
 // holds the finite cells by the criterion's measure, worst on top; the worst
 // cell is taken and the operations are tried on it in a fixed order (edge

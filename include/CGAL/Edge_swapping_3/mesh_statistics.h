@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counts and quality extremes of a triangulation, as the paper reports them.
 
 #ifndef CGAL_EDGE_SWAPPING_3_MESH_STATISTICS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Multi-face removal (Shewchuk, "Two discrete optimization algorithms for the
 // topological improvement of tetrahedral meshes", 2002), the inverse of edge
 // removal. Two vertices u and w lie on either side of a facet abc; a triangle

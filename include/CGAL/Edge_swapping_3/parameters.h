@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The package's own named parameters. CGAL's (`number_of_iterations`,
 // `random_seed`, `visitor`, ...) are used as they are; these add the
 // package's settings in the same convention, each in two forms:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Point sets for experiments and tests: random ones drawn from a seed, and
 // degenerate ones (grids, exactly cospherical and coplanar sets, clusters,
 // jittered grids), the inputs on which the paper's conjectures are tested.

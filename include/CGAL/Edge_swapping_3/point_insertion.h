@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Point insertion by swapping (paper section 5, "Mesh Refinement Operation"):
 // locate the point by walking, split the simplex it falls in (1-4 in a cell,
 // 2-6 on a facet, n-2n on an edge; joined to the visible hull facets outside),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The problems that keep a point set from having a 3-D triangulation, named
 // for the user: coordinates outside the supported range, too few points,
 // duplicates, all coplanar. Exact predicates.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Refinement at circumcenters (paper section 5): incremental mesh generation
 // by aspect ratio, and adaptive refinement by a solution gradient. Both keep
 // a heap of cells, insert a site at the circumcenter of the top cell with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Start triangulations for experiments: placing (no flip at all), CGAL's
 // Delaunay triangulation, and a Delaunay triangulation scrambled by random flips.
 

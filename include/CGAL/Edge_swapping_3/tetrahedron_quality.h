@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Quality measures of a tetrahedron: dihedral angles, the paper's two
 // aspect ratios, the smallest dihedral sine and the volume-length ratio. Constructions in double precision: approximate by nature.
 // Every measure is scale invariant, so it is computed on the edge vectors

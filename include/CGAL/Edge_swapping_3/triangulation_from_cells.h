@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Builds a Triangulation_3 from points and tetrahedra (a mesh read from a
 // file), and says precisely what is wrong when they do not form a valid
 // triangulation of the convex hull of the points.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Two-step edge removal: when no triangulation of an edge's ring beats the
 // tetrahedra around it, first remove an edge of its star (from one of its
 // ends to a ring vertex), which changes the ring, then the edge itself.

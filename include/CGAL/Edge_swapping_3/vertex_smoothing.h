@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Optimization-based smoothing of one interior vertex: the vertex moves to
 // where the worst tetrahedron around it is better, the cells and their
 // connections unchanged. The objective, the worst value of the criterion's
@@ -20,6 +21,7 @@
 
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>

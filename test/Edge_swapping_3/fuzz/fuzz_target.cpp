@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A libFuzzer target for one reader of the package, chosen at compile time
 // by EDGE_SWAPPING_3_FUZZ_READER (node, ele, medit, vtu, topcom, case_json,
 // results); the harness itself is compiled once (harness_object.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The harness of every reader compiled once, for all the libFuzzer targets.
 
 #include "reader_harness.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The harness of each reader (readers.h names them), shared by the libFuzzer
 // targets and by the mutation test of the suite: read `data` as the file `name`, and when it is
 // accepted, go on as the program does (build and check the mesh, run a small

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The readers that are fuzzed, and what a harness run says: light enough for
 // the libFuzzer targets' own translation units (reader_harness.h runs them).
 

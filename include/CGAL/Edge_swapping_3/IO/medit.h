@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Medit .mesh files (ASCII, as written by CGAL's Mesh_3 and read by Gmsh,
 // MMG and ParaView): vertices, boundary triangles and tetrahedra, each with a
 // reference (the subdomain of a tetrahedron, the surface patch of a triangle).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TetGen .node and .ele files: reading with clear errors, writing so that
 // coordinates read back to the same doubles.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What every reader of the package shares: the error that names the file,
 // the line and the problem; reading a whole file (a regular file only);
 // numbers parsed without streams, with range checks; and a scanner over the

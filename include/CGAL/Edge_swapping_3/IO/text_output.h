@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the writers share: no file the package writes holds nan or inf. A
 // value that is not finite is refused with an error naming what it is, so
 // that the all-or-nothing writer of the program writes nothing at all.

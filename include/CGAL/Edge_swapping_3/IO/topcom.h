@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // TOPCOM's text formats (Rambau's Triangulations Of Point Configurations and
 // Oriented Matroids): a point configuration in homogeneous coordinates,
 // `[[x,y,z,1],...]`, and the triangulations it enumerates, one per line,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // VTK XML unstructured grid (.vtu, ASCII) for ParaView: tetrahedra with
 // named scalar fields per point and per cell.
 

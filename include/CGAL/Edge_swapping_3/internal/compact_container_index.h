@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A dense index for the items of a CGAL::Compact_container (the cells of a
 // TDS), so that a driver keeps its per-cell state in plain arrays instead of
 // hash tables keyed by handles. The index of an item is its slot number, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cells around an edge, in turning order, with the ring of vertices they
 // share, and the plans of the edge flips (3-2, 4-4 and the hull 2-2) on it.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A facet named by its three vertices, so that it can be found again after
 // flips have reused the cells that held it. The vertices are kept in address
 // order: addresses serve hashing and equality only, never a decision.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The attempts of a local operation (edge removal, multi-face removal,
 // vertex smoothing) that failed, remembered with a signature of the cells
 // they read, vertices and positions: the same cells at the same places give

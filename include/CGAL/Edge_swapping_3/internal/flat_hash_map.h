@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hash map with open addressing (linear probing, deletion by backward
 // shift) for the drivers' per-cell and per-facet state. Node-based maps
 // allocate on every insertion; a driver inserts and erases a few dozen keys

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The facets of a mesh being glued that have met one tetrahedron so far,
 // keyed by their sorted point indices. Each slot (16 bytes) holds the key and
 // where the facet was seen, so that a probe touches one cache line; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The three orientation tests of a link flip at once: for a cell c and its
 // vertex i (the new vertex), the orientation of c with each other vertex k
 // replaced by a point e. All three share the translation by c's vertex i, so

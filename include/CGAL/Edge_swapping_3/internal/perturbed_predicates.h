@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact in-sphere and coplanar in-circle tests, optionally with the symbolic
 // perturbation of Devillers and Teillaud that CGAL's Delaunay_triangulation_3
 // uses, so that a flip algorithm reaches the same triangulation as CGAL, cell

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Numbers distinct points by their lexicographic rank, to compare cells of
 // two triangulations of the same points.
 

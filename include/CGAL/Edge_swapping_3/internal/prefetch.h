@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Asking the processor early for the memory of cells about to be visited.
 // A pass over every facet of a large triangulation is bound by cache misses
 // on neighbouring cells and their vertices, not by the predicates.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The last step of the Delaunay repair: the cells of a triangulation replaced
 // by those of CGAL's Delaunay triangulation of its vertices. The vertices (and
 // their data) stay; every cell is new.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Replacing a set of cells by another triangulation of the same region,
 // glued to the rest: the last step of edge removal and multi-face removal.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The split step of an insertion (1-4 in a cell, 2-6 on a facet, n-2n on an
 // edge, or the join to the visible hull facets), done by CGAL's
 // Triangulation_3::insert, with the cell and facet data of a domain mesh

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The schedule and the ending shared by the swap drivers; the rule (what a
 // visit of a facet decides) is the caller's. Two schedules:
 //  - the paper's cycles: each round lists every interior facet and visits those
