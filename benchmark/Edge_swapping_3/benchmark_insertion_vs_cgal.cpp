@@ -49,8 +49,7 @@ int count_predicates(std::size_t n)
 {
   const auto points = random_points(n);
   CGAL::Triangulation_3<Counting_kernel> tr;
-  ES::Insertion_totals totals;
-  ES::delaunay_by_insertion(tr, points, &totals);
+  const auto totals = ES::delaunay_by_insertion(tr, points);
   const Counts ours = counts;
   counts = Counts();
   CGAL::Delaunay_triangulation_3<Counting_kernel> dt(points.begin(), points.end());
@@ -79,8 +78,7 @@ int main(int argc, char** argv)
     const Measure ours = in_child([n](double* out) {
       const auto points = random_points(n);
       Triangulation tr;
-      ES::Insertion_totals totals;
-      ES::delaunay_by_insertion(tr, points, &totals);
+      const auto totals = ES::delaunay_by_insertion(tr, points);
       out[0] = totals.seconds;
       const auto& s = totals.swaps;
       out[1] = double(s[0] + s[1] + s[2] + s[3]);

@@ -165,7 +165,7 @@ TEST_CASE("Without perturbation - a cospherical set ends locally Delaunay but ma
   // without the perturbation, so no swap is made.
   Tr tr;
   ES::insert_by_placing(tr, grid(2, 2, 2), ES::INPUT_ORDER);
-  const auto report = CGAL::swap_edges(tr, ES::Delaunay_criterion(ES::NO_PERTURBATION));
+  const auto report = CGAL::swap_edges(tr, ES::Delaunay_criterion(), ES::parameters::perturbation(ES::NO_PERTURBATION));
   REQUIRE(report.ending == ES::CONVERGED);
   REQUIRE(report.total_swaps()[0] + report.total_swaps()[1] + report.total_swaps()[2] + report.total_swaps()[3] == 0);
   REQUIRE(ES::number_of_non_delaunay_facets(tr, ES::NO_PERTURBATION) == 0);

@@ -11,7 +11,7 @@ using namespace test;
 
 namespace {
 
-void require_cgal_delaunay(const Tr& tr, const ES::Insertion_totals& totals)
+void require_cgal_delaunay(const Tr& tr, const ES::Insertion_report<Tr>& totals)
 {
   REQUIRE(tr.is_valid(true));
   REQUIRE(totals.stuck_facets == 0);
@@ -31,8 +31,8 @@ TEST_CASE("Insertion with plain flips equals CGAL's Delaunay triangulation on ev
         INFO("family " << family.name << ", seed " << seed << ", "
                        << (order == ES::SPATIAL_ORDER ? "spatial" : "input") << " order");
         Tr tr;
-        ES::Insertion_totals totals;
-        const auto vertices = ES::delaunay_by_insertion(tr, family.points, &totals, order);
+        const auto totals = ES::delaunay_by_insertion(tr, family.points, ES::parameters::insertion_order(order));
+        const auto& vertices = totals.vertices;
         for(std::size_t k = 0; k < vertices.size(); ++k) REQUIRE(vertices[k]->point() == family.points[k]);
         require_cgal_delaunay(tr, totals);
       }
@@ -47,8 +47,7 @@ TEST_CASE("Insertion in a random order of a grid equals CGAL's", "[insertion][ex
     CGAL::Random rng(seed);
     std::shuffle(points.begin(), points.end(), std::mt19937(seed));
     Tr tr;
-    ES::Insertion_totals totals;
-    ES::delaunay_by_insertion(tr, points, &totals, ES::INPUT_ORDER);
+    const auto totals = ES::delaunay_by_insertion(tr, points, ES::parameters::insertion_order(ES::INPUT_ORDER));
     require_cgal_delaunay(tr, totals);
   }
 }

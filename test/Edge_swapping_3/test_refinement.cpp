@@ -83,8 +83,9 @@ TEST_CASE("Refinement by aspect ratio reaches its target on a random-point mesh"
   INFO("seed " << seed);
   Tr tr;
   ES::delaunay_by_insertion(tr, random_in_cube(200, seed));
-  ES::Refinement_options<Tr> options;
-  const auto report = ES::refine_by_aspect_ratio(tr, 3.0, ES::EDGE_LENGTH_RATIO, 5000, options);
+  const auto report = ES::refine_by_aspect_ratio(tr, 3.0, ES::Delaunay_criterion(),
+                                                 ES::parameters::aspect_ratio_definition(ES::EDGE_LENGTH_RATIO,
+                                                                                         ES::parameters::maximum_sites(5000)));
   REQUIRE(report.target_met);
   REQUIRE(report.rounds.front().worst_refinable > 3.0);
   REQUIRE(report.rounds.back().worst_refinable <= 3.0);
@@ -106,15 +107,15 @@ TEST_CASE("Refinement by gradient puts the sites where the field varies and inte
   ES::delaunay_by_insertion(tr, points);
   std::map<Tr::Vertex_handle, double> value; // a front at x = 0.5
   for(auto v : tr.finite_vertex_handles()) value[v] = std::tanh(40 * (v->point().x() - 0.5));
-  ES::Refinement_options<Tr> options;
   std::size_t near_front = 0;
-  options.new_vertex = [&](Tr::Vertex_handle v, const ES::Site_location<Tr>& where) {
+  const auto new_vertex = [&](Tr::Vertex_handle v, const ES::Site_location<Tr>& where) {
     double x = 0;
     for(int k = 0; k < 4; ++k) x += where.weights[k] * value.at(where.vertices[k]);
     value[v] = x;
     if(std::abs(v->point().x() - 0.5) < 0.1) ++near_front;
   };
-  const auto report = ES::refine_by_gradient(tr, [&](Tr::Vertex_handle v) { return value.at(v); }, 300, options);
+  const auto report = ES::refine_by_gradient(tr, [&](Tr::Vertex_handle v) { return value.at(v); }, 300,
+                                             ES::Delaunay_criterion(), ES::parameters::new_vertex_visitor(new_vertex));
   REQUIRE(report.sites_inserted == 300);
   REQUIRE(tr.number_of_vertices() == 800);
   REQUIRE(near_front > 250); // a fifth of the volume holds most of the sites
@@ -135,11 +136,12 @@ TEST_CASE("Domain mesh: swaps and refinement keep constrained facets and subdoma
                    ES::parameters::mesh_constraints(constraints, CGAL::parameters::random_seed(2)));
   REQUIRE(constrained_facets(tr) == facets_before);
 
-  ES::Refinement_options<Domain_tr> refinement;
   std::vector<Point> sites;
-  refinement.new_vertex = [&](Domain_tr::Vertex_handle v, const ES::Site_location<Domain_tr>&) { sites.push_back(v->point()); };
-  const auto report = ES::refine_by_aspect_ratio(tr, 1.6, ES::EDGE_LENGTH_RATIO, 400, refinement,
-                                                 ES::Delaunay_criterion(), constraints);
+  const auto new_vertex = [&](Domain_tr::Vertex_handle v, const ES::Site_location<Domain_tr>&) { sites.push_back(v->point()); };
+  const auto report = ES::refine_by_aspect_ratio(
+      tr, 1.6, ES::Delaunay_criterion(),
+      ES::parameters::maximum_sites(400, ES::parameters::new_vertex_visitor(new_vertex,
+                                                                            ES::parameters::mesh_constraints(constraints))));
   REQUIRE(report.sites_inserted > 0);
   INFO("sites " << report.sites_inserted << ", refused " << report.sites_refused << ", worst refinable "
                 << report.rounds.back().worst_refinable << ", worst " << report.rounds.back().worst);

@@ -55,9 +55,9 @@ inline nlohmann::json statistics_json(const ES::Mesh_statistics& s)
 
 /// Calls `run(criterion)` with the criterion named `name`.
 template <class Run>
-auto with_criterion(const std::string& name, ES::Perturbation perturbation, Run run)
+auto with_criterion(const std::string& name, Run run)
 {
-  if(name == "delaunay") return run(ES::Delaunay_criterion(perturbation));
+  if(name == "delaunay") return run(ES::Delaunay_criterion());
   if(name == "minmax-dihedral") return run(ES::Min_max_dihedral_angle_criterion());
   if(name == "maxmin-dihedral") return run(ES::Max_min_dihedral_angle_criterion());
   if(name == "min-edges") return run(ES::Min_edges_criterion());
@@ -110,9 +110,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   const std::size_t cells_before = tr.number_of_finite_cells();
   namespace np = ES::parameters;
   const ES::Quality_report report = with_constraints(in, [&](const auto& constraints) {
-    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
-      if constexpr(std::is_same<std::decay_t<decltype(criterion)>, ES::Delaunay_criterion>::value ||
-                   std::is_same<std::decay_t<decltype(criterion)>, ES::Min_edges_criterion>::value)
+    return with_criterion(o.criterion, [&](const auto& criterion) {
+      if constexpr(!ES::Is_worst_tetrahedron_criterion<std::decay_t<decltype(criterion)>>::value)
         return ES::Quality_report(); // refused before any work
       else
       {
@@ -178,7 +177,7 @@ inline int run_optimize(const Optimize_options& o)
   if(!o.operations.empty() && !quality_criterion)
     throw Usage_error("--operations drives a quality criterion (minmax-dihedral, maxmin-dihedral, aspect-ratio, "
                       "edge-ratio, radius-ratio, dihedral-sine, volume-length), not --criterion " + o.criterion);
-  with_criterion(o.criterion, ES::CGAL_PERTURBATION, [](const auto&) { return 0; }); // an unknown name fails here
+  with_criterion(o.criterion, [](const auto&) { return 0; }); // an unknown name fails here
   Optimize_options options = o;
   if(quality_criterion && options.operations.empty()) options.operations = default_quality_operations;
   unsigned operations = quality_criterion ? quality_operations(options.operations) : 0u;
@@ -232,7 +231,7 @@ inline int run_optimize(const Optimize_options& o)
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
   const ES::Swap_report report = with_constraints(in, [&](const auto& constraints) {
     if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
-    return with_criterion(o.criterion, perturbation, [&](const auto& criterion) {
+    return with_criterion(o.criterion, [&](const auto& criterion) {
       return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
     });
   });

@@ -65,7 +65,7 @@ inline int run_insert(const Insert_options& o)
   std::size_t inserted = 0, existing = 0, refused = 0;
   std::array<std::size_t, ES::number_of_flip_kinds> swaps{};
   with_constraints(in, [&](const auto& constraints) {
-    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
+    return with_criterion(o.criterion, [&](const auto& criterion) {
       Triangulation::Cell_handle hint;
       for(const auto& q : node.points)
       {
@@ -76,7 +76,8 @@ inline int run_insert(const Insert_options& o)
         // Interpolation weights in the cell that holds the point (outside the hull: none).
         ES::Site_location<Triangulation> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)}, {0, 0, 0, 0}};
         if(!tr.is_infinite(at)) where.weights = ES::internal::barycentric_weights(tr, at, p);
-        const auto r = ES::insert_by_swapping(tr, p, criterion, at, constraints);
+        const auto r = ES::insert_by_swapping(tr, p, criterion,
+                                              ES::parameters::hint(at, ES::parameters::mesh_constraints(constraints)));
         if(r.vertex == Triangulation::Vertex_handle()) { ++refused; continue; }
         hint = r.vertex->cell();
         if(!r.is_new) { ++existing; continue; }
@@ -153,8 +154,7 @@ inline int run_refine(const Refine_options& o)
     }
   }
 
-  ES::Refinement_options<Triangulation> options;
-  options.new_vertex = [&](Triangulation::Vertex_handle v, const ES::Site_location<Triangulation>& where) {
+  const auto new_vertex = [&](Triangulation::Vertex_handle v, const ES::Site_location<Triangulation>& where) {
     add_vertex(in, v, field_values(in, v->point(), where));
   };
   CGAL::Real_timer clock;
@@ -164,21 +164,26 @@ inline int run_refine(const Refine_options& o)
     if(o.by == "aspect-ratio") std::cerr << ", worst refinable aspect ratio " << r.worst_refinable;
     std::cerr << " (" << clock.time() << " s)\n";
   };
-  if(o.by == "aspect-ratio") options.round_visitor = progress;
+  std::function<void(const ES::Refinement_round&)> round_visitor;
+  if(o.by == "aspect-ratio") round_visitor = progress;
 
   ES::Refinement_report total;
   with_constraints(in, [&](const auto& constraints) {
-    return with_criterion(o.criterion, ES::CGAL_PERTURBATION, [&](const auto& criterion) {
+    namespace np = ES::parameters;
+    const auto settings = np::new_vertex_visitor(new_vertex, np::round_visitor(round_visitor, np::mesh_constraints(constraints)));
+    return with_criterion(o.criterion, [&](const auto& criterion) {
       if(o.by == "aspect-ratio")
-        total = ES::refine_by_aspect_ratio(tr, o.target, o.ratio == "edge" ? ES::EDGE_LENGTH_RATIO : ES::RADIUS_RATIO,
-                                           o.max_sites, options, criterion, constraints);
+        total = ES::refine_by_aspect_ratio(
+            tr, o.target, criterion,
+            np::aspect_ratio_definition(o.ratio == "edge" ? ES::EDGE_LENGTH_RATIO : ES::RADIUS_RATIO,
+                                        np::maximum_sites(o.max_sites, settings)));
       else
       {
         const std::size_t f = std::size_t(field);
         auto value = [&](Triangulation::Vertex_handle v) { return in.fields[f][v->info()]; };
         for(std::size_t k = 0; k < rounds.size(); ++k)
         {
-          auto r = ES::refine_by_gradient(tr, value, rounds[k], options, criterion, constraints);
+          auto r = ES::refine_by_gradient(tr, value, rounds[k], criterion, settings);
           r.rounds.back().round = k + 1;
           progress(r.rounds.back());
           total.rounds.push_back(r.rounds.back());

@@ -8,6 +8,7 @@
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/perturbed_predicates.h>
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
+#include <type_traits>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -51,23 +52,36 @@ std::size_t number_of_non_delaunay_facets(const Tr& tr,
   return n;
 }
 
+/// \ingroup PkgEdgeSwapping3Criteria
 /// Model of `SwapCriterion_3`: swap when the inspected facet is not locally
 /// Delaunay. For five points with two triangulations exactly one is Delaunay
 /// (with the perturbation), so a swap always moves toward the Delaunay triangulation.
+///
+/// It declares `is_delaunay_criterion`, so the drivers decide its visits with
+/// the exact in-sphere test under their `perturbation` parameter (the one home
+/// of the tie-breaking) and end on the Delaunay triangulation. Called on its
+/// own, it breaks ties as CGAL does.
 struct Delaunay_criterion
 {
   static constexpr bool is_delaunay_criterion = true;
-  Perturbation perturbation = CGAL_PERTURBATION;
-
-  Delaunay_criterion() = default;
-  explicit Delaunay_criterion(Perturbation p) : perturbation(p) {}
 
   template <class Tr>
   bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
   {
-    return !is_locally_delaunay(tr, conf.cell(), conf.index(), perturbation);
+    return !is_locally_delaunay(tr, conf.cell(), conf.index(), CGAL_PERTURBATION);
   }
 };
+
+/// \ingroup PkgEdgeSwapping3Criteria
+/// Whether the drivers treat `Criterion` as the Delaunay criterion (its fast
+/// path, its endings, its repair): true when the criterion declares
+/// `static constexpr bool is_delaunay_criterion = true`. The dispatch is on
+/// this declaration, never on the type, so a user's wrapper that declares it
+/// keeps every fast path and ending.
+template <class Criterion, class = void>
+struct Is_delaunay_criterion : std::false_type {};
+template <class Criterion>
+struct Is_delaunay_criterion<Criterion, std::enable_if_t<Criterion::is_delaunay_criterion>> : std::true_type {};
 
 } // namespace Edge_swapping_3
 } // namespace CGAL

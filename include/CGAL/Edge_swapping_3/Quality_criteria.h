@@ -10,6 +10,8 @@
 #ifndef CGAL_EDGE_SWAPPING_3_QUALITY_CRITERIA_H
 #define CGAL_EDGE_SWAPPING_3_QUALITY_CRITERIA_H
 
+#include <type_traits>
+
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 
@@ -63,6 +65,20 @@ struct Worst_tetrahedron_criterion
     return alternative > current * (1 + relative_tolerance);
   }
 };
+
+namespace internal {
+template <class Measure, bool larger_is_worse>
+std::true_type is_worst_tetrahedron_criterion(const Worst_tetrahedron_criterion<Measure, larger_is_worse>*);
+std::false_type is_worst_tetrahedron_criterion(...);
+} // namespace internal
+
+/// Whether `Criterion` is (or derives from) a `Worst_tetrahedron_criterion`,
+/// the criteria that the quality operations (`remove_edge`,
+/// `improve_worst_tetrahedra`, ...) take.
+template <class Criterion>
+struct Is_worst_tetrahedron_criterion
+  : decltype(internal::is_worst_tetrahedron_criterion(static_cast<const Criterion*>(nullptr)))
+{};
 
 struct Largest_dihedral_angle
 {

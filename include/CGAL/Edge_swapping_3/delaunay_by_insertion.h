@@ -7,6 +7,8 @@
 #define CGAL_EDGE_SWAPPING_3_DELAUNAY_BY_INSERTION_H
 
 #include <CGAL/Real_timer.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <algorithm>
@@ -42,53 +44,80 @@ std::vector<std::size_t> basis_first(const std::vector<Point>& points, const Gt&
 } // namespace internal
 
 /// What `delaunay_by_insertion` did, over all points.
-struct Insertion_totals
+template <class Tr>
+struct Insertion_report
 {
+  /// The vertex of each point, in the order of the input (equal points share one).
+  std::vector<typename Tr::Vertex_handle> vertices;
   std::array<std::size_t, number_of_flip_kinds> swaps{};
   std::size_t stuck_facets = 0; ///< should stay 0 (Joe 1991)
   double seconds = 0;
 };
 
-/// Makes the empty `tr` the Delaunay triangulation of `points` by inserting
-/// them one at a time with plain flips (no helper), in `order`. With
-/// `CGAL_PERTURBATION` the result is CGAL's Delaunay_triangulation_3, cell for
-/// cell. The first four affinely independent points (in that order) start the
-/// triangulation; if there are none (all points coplanar) `tr` is left of
-/// lower dimension and is not Delaunay. Returns the vertex of each point
-/// (equal points share one).
-template <class Tr>
-std::vector<typename Tr::Vertex_handle>
-delaunay_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
-                      Insertion_totals* totals = nullptr,
-                      Insertion_order order = SPATIAL_ORDER,
-                      Perturbation perturbation = CGAL_PERTURBATION)
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Makes the empty `tr` the Delaunay triangulation of `points` by
+/// inserting them one at a time with plain flips (no helper).
+///
+/// With `CGAL_PERTURBATION` the result is CGAL's `Delaunay_triangulation_3`,
+/// cell for cell. The first four affinely independent points (in the
+/// insertion order) start the triangulation; if there are none (all points
+/// coplanar) `tr` is left of lower dimension and is not Delaunay.
+///
+/// \tparam Tr a `CGAL::Triangulation_3`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \param tr an empty triangulation
+/// \param points the points
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \pre `tr.number_of_vertices() == 0`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{insertion_order}
+///     \cgalParamDescription{the order in which the points are inserted}
+///     \cgalParamType{`Edge_swapping_3::Insertion_order`}
+///     \cgalParamDefault{`Edge_swapping_3::SPATIAL_ORDER`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{perturbation}
+///     \cgalParamDescription{how cospherical ties are broken}
+///     \cgalParamType{`Edge_swapping_3::Perturbation`}
+///     \cgalParamDefault{`Edge_swapping_3::CGAL_PERTURBATION`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the vertex of each point, the swaps made, the stuck facets (0) and the time
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Insertion_report<Tr> delaunay_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
+                                           const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   typedef typename Tr::Vertex_handle Vertex_handle;
   CGAL_precondition(tr.number_of_vertices() == 0);
+  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
+  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
   CGAL::Real_timer timer;
   timer.start();
   const std::vector<std::size_t> seq = internal::basis_first(
       points, tr.geom_traits(), internal::insertion_sequence<typename Tr::Geom_traits>(points, order));
 
-  std::vector<Vertex_handle> vertices(points.size());
-  Insertion_totals local;
+  Insertion_report<Tr> report;
+  report.vertices.resize(points.size());
   Vertex_handle hint;
-  const Delaunay_criterion criterion(perturbation);
   for(std::size_t k : seq)
   {
     if(tr.dimension() < 3)
-      hint = vertices[k] = tr.insert(points[k], hint == Vertex_handle() ? typename Tr::Cell_handle() : hint->cell());
+      hint = report.vertices[k] =
+        tr.insert(points[k], hint == Vertex_handle() ? typename Tr::Cell_handle() : hint->cell());
     else
     {
-      const auto r = insert_by_swapping(tr, points[k], criterion, hint->cell());
-      hint = vertices[k] = r.vertex;
-      for(int f = 0; f < number_of_flip_kinds; ++f) local.swaps[f] += r.swaps[f];
-      local.stuck_facets += r.stuck_facets;
+      const auto r = internal::insert_by_swapping(tr, points[k], Delaunay_criterion(), hint->cell(), No_constraints(),
+                                                  perturbation, 0);
+      hint = report.vertices[k] = r.vertex;
+      for(int f = 0; f < number_of_flip_kinds; ++f) report.swaps[f] += r.swaps[f];
+      report.stuck_facets += r.stuck_facets;
     }
   }
-  local.seconds = timer.time();
-  if(totals) *totals = local;
-  return vertices;
+  report.seconds = timer.time();
+  return report;
 }
 
 } // namespace Edge_swapping_3

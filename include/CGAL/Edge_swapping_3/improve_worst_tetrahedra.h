@@ -112,45 +112,17 @@ void keep_first_occurrences(std::vector<Handle>& items)
 
 } // namespace internal
 
-/// Improves the worst tetrahedra of `tr` under `criterion` (any
-/// `Worst_tetrahedron_criterion`: MinMax or MaxMin dihedral angle, an aspect
-/// ratio) by hill climbing, worst first: edge removal (`remove_edge`) on each
-/// edge of the worst cell, multi-face removal (`remove_faces`) at each of its
-/// facets, the flip of each of its facets, then, with `SMOOTHING`, the
-/// smoothing (`smooth_vertex`) of each of its vertices, the first that
-/// improves the worst tetrahedron where it acts. Every change improves
-/// that worst value beyond the criterion's relative tolerance, so the worst
-/// value over the mesh never gets worse and the run ends.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`: no
-///     point moves unless asked) \cgalParamNEnd
-///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
-///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
-///     triangles multi-face removal explores, default 10 \cgalParamNEnd
-///   \cgalParamNBegin{maximum_moves_per_vertex} with `SMOOTHING`, the most times a vertex moves in a run,
-///     default 20: smoothing a vertex to the best place of its star moves its neighbours' best places, and
-///     without a bound the gains shrink for long (measured on 300 random points, MaxMin dihedral sine:
-///     8,376 moves, 4.6 s without a bound; 3,793 moves, 2.0 s with 20; the worst sine 0.127 and 0.072)
-///     \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
-///     times the number of cells \cgalParamNEnd
-///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
-///     heap (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
-///     the run ends when no operation improves any cell \cgalParamNEnd
-///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
-///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
-/// \cgalNamedParamsEnd
-template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+namespace internal {
+
+template <class Tr, class Measure, bool larger_is_worse, class Constraints, class NamedParameters>
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                        const NamedParameters& np = CGAL::parameters::default_values())
+                                        const Constraints& constraints, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef internal::Worst_cell_entry Entry;
   CGAL_precondition(tr.dimension() == 3);
-  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const int maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), 20);
@@ -424,6 +396,46 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   report.worst_after = worst();
   report.seconds = timer.time();
   return report;
+}
+
+} // namespace internal
+
+/// Improves the worst tetrahedra of `tr` under `criterion` (any
+/// `Worst_tetrahedron_criterion`: MinMax or MaxMin dihedral angle, an aspect
+/// ratio) by hill climbing, worst first: edge removal (`remove_edge`) on each
+/// edge of the worst cell, multi-face removal (`remove_faces`) at each of its
+/// facets, the flip of each of its facets, then, with `SMOOTHING`, the
+/// smoothing (`smooth_vertex`) of each of its vertices, the first that
+/// improves the worst tetrahedron where it acts. Every change improves
+/// that worst value beyond the criterion's relative tolerance, so the worst
+/// value over the mesh never gets worse and the run ends.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`: no
+///     point moves unless asked) \cgalParamNEnd
+///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
+///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
+///     triangles multi-face removal explores, default 10 \cgalParamNEnd
+///   \cgalParamNBegin{maximum_moves_per_vertex} with `SMOOTHING`, the most times a vertex moves in a run,
+///     default 20: smoothing a vertex to the best place of its star moves its neighbours' best places, and
+///     without a bound the gains shrink for long (measured on 300 random points, MaxMin dihedral sine:
+///     8,376 moves, 4.6 s without a bound; 3,793 moves, 2.0 s with 20; the worst sine 0.127 and 0.072)
+///     \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
+///     times the number of cells \cgalParamNEnd
+///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
+///     heap (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
+///     the run ends when no operation improves any cell \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
+///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class Measure, bool larger_is_worse, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return internal::improve_worst_tetrahedra(tr, criterion, constraints, np);
+  });
 }
 
 } // namespace Edge_swapping_3

@@ -339,11 +339,12 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
-  std::vector<typename Tr::Cell_handle> created;
-  return internal::remove_faces(tr, f, criterion, constraints, visitor, maximum, created);
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    std::vector<typename Tr::Cell_handle> created;
+    return internal::remove_faces(tr, f, criterion, constraints, visitor, maximum, created);
+  });
 }
 
 } // namespace Edge_swapping_3

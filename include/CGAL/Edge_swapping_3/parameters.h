@@ -26,6 +26,13 @@ enum maximum_ring_size_t { maximum_ring_size };
 enum operations_t { operations };
 enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
 enum quality_target_t { quality_target };
+enum hint_t { hint };
+enum maximum_swaps_t { maximum_swaps };
+enum insertion_order_t { insertion_order };
+enum aspect_ratio_definition_t { aspect_ratio_definition };
+enum maximum_sites_t { maximum_sites };
+enum new_vertex_visitor_t { new_vertex_visitor };
+enum round_visitor_t { round_visitor };
 
 } // namespace internal_np
 
@@ -48,7 +55,8 @@ namespace parameters {
 CGAL_EDGE_SWAPPING_3_PARAMETER(schedule)
 /// `Face_order`: the order of visits within a round (default `STORAGE_ORDER`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(face_order)
-/// `Perturbation`: the tie-breaking of the helper's Delaunay tests (default `CGAL_PERTURBATION`).
+/// `Perturbation`: how a Delaunay criterion, the helper and Delaunay
+/// insertion break cospherical ties (default `CGAL_PERTURBATION`). Its only home.
 CGAL_EDGE_SWAPPING_3_PARAMETER(perturbation)
 /// `bool`: count the non-Delaunay facets after each round (a full pass; default false).
 CGAL_EDGE_SWAPPING_3_PARAMETER(record_non_delaunay_facets)
@@ -75,6 +83,27 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_moves_per_vertex)
 /// `double`: `improve_worst_tetrahedra` works only on the cells whose measure
 /// is worse than this value (default: on every cell).
 CGAL_EDGE_SWAPPING_3_PARAMETER(quality_target)
+
+/// `Tr::Cell_handle`: where the walk of `insert_by_swapping` starts (default: anywhere).
+CGAL_EDGE_SWAPPING_3_PARAMETER(hint)
+/// `std::size_t`: the most swaps `insert_by_swapping` makes after a split
+/// under a criterion other than Delaunay (default 100000).
+CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_swaps)
+/// `Insertion_order`: the order in which `delaunay_by_insertion` inserts the
+/// points (default `SPATIAL_ORDER`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(insertion_order)
+/// `Aspect_ratio_definition`: the measure `refine_by_aspect_ratio` refines
+/// by (default `EDGE_LENGTH_RATIO`).
+CGAL_EDGE_SWAPPING_3_PARAMETER(aspect_ratio_definition)
+/// `std::size_t`: the most sites `refine_by_aspect_ratio` inserts (default: no limit).
+CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_sites)
+/// A callable `void(Tr::Vertex_handle, const Site_location<Tr>&)`, called by
+/// the refinement functions for each new vertex before the next site is
+/// chosen: set its data (index, field values) there.
+CGAL_EDGE_SWAPPING_3_PARAMETER(new_vertex_visitor)
+/// A callable `void(const Refinement_round&)`, called by the refinement
+/// functions after each round.
+CGAL_EDGE_SWAPPING_3_PARAMETER(round_visitor)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 

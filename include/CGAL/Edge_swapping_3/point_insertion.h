@@ -15,6 +15,7 @@
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/orientations_with_apex.h>
 #include <CGAL/Edge_swapping_3/internal/split_with_data.h>
 #include <array>
@@ -301,20 +302,13 @@ void swap_around(Tr& tr, typename Tr::Vertex_handle v, const Criterion& criterio
 
 } // namespace internal
 
-/// Inserts `p` into `tr` (dimension 3) by splitting the simplex it falls in,
-/// then swapping outward from the new vertex under `criterion` (a model of
-/// `SwapCriterion_3`). With `Delaunay_criterion`, inserting into a Delaunay
-/// triangulation gives the Delaunay triangulation of the points with `p`
-/// (with CGAL's perturbation: CGAL's own, cell for cell).
-/// The walk starts at `hint` (any cell; default: anywhere). In a domain mesh
-/// (`constraints`), a point outside the domain, or on a constrained facet or
-/// on an edge of one, is refused and `tr` is left unchanged. Other criteria
-/// stop after `max_swaps` swaps (their front need not settle).
-template <class Tr, class Criterion, class Constraints = No_constraints>
+namespace internal {
+
+/// `insert_by_swapping` with its settings spelled out.
+template <class Tr, class Criterion, class Constraints>
 Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, const Criterion& criterion,
-                                        typename Tr::Cell_handle hint = typename Tr::Cell_handle(),
-                                        const Constraints& constraints = Constraints(),
-                                        std::size_t max_swaps = 100000)
+                                        typename Tr::Cell_handle hint, const Constraints& constraints,
+                                        Perturbation perturbation, std::size_t max_swaps)
 {
   CGAL_precondition(tr.dimension() == 3);
   Insertion_result<Tr> result;
@@ -326,15 +320,75 @@ Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, con
     result.vertex = c->vertex(li);
     return result;
   }
-  if(!internal::split_is_allowed(tr, c, result.location, li, lj, constraints))
+  if(!split_is_allowed(tr, c, result.location, li, lj, constraints))
     return result;
-  result.vertex = internal::split_with_data(tr, p, c, result.location, li, lj, constraints);
+  result.vertex = split_with_data(tr, p, c, result.location, li, lj, constraints);
   result.is_new = true;
-  if constexpr(std::is_same<Criterion, Delaunay_criterion>::value)
-    internal::flip_link_to_delaunay(tr, result.vertex, criterion.perturbation, constraints, result);
+  if constexpr(Is_delaunay_criterion<Criterion>::value)
+    flip_link_to_delaunay(tr, result.vertex, perturbation, constraints, result);
   else
-    internal::swap_around(tr, result.vertex, criterion, constraints, max_swaps, result);
+    swap_around(tr, result.vertex, criterion, constraints, max_swaps, result);
   return result;
+}
+
+} // namespace internal
+
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Inserts `p` into `tr` by splitting the simplex it falls in, then
+/// swapping outward from the new vertex under `criterion`.
+///
+/// With a Delaunay criterion (`Is_delaunay_criterion`), inserting into a
+/// Delaunay triangulation gives the Delaunay triangulation of the points with
+/// `p` (with `CGAL_PERTURBATION`: CGAL's own, cell for cell); only the link of
+/// the new vertex is tested. Other criteria test every facet of a changed
+/// cell again and stop after `maximum_swaps` swaps. In a domain mesh a point
+/// outside the domain, or on a constrained facet or on an edge of one, is
+/// refused and `tr` is left unchanged.
+///
+/// \tparam Tr a `CGAL::Triangulation_3`
+/// \tparam Criterion a model of `SwapCriterion_3`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \param tr the triangulation, of dimension 3
+/// \param p the point to insert
+/// \param criterion decides the swaps after the split
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \pre `tr.dimension() == 3`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{hint}
+///     \cgalParamDescription{the cell where the walk to `p` starts}
+///     \cgalParamType{`Tr::Cell_handle`}
+///     \cgalParamDefault{anywhere}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{perturbation}
+///     \cgalParamDescription{how a Delaunay criterion breaks cospherical ties}
+///     \cgalParamType{`Edge_swapping_3::Perturbation`}
+///     \cgalParamDefault{`Edge_swapping_3::CGAL_PERTURBATION`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_swaps}
+///     \cgalParamDescription{criteria other than Delaunay: the most swaps after the split}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{100000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{facet_is_constrained_map, cell_is_selected_map, mesh_constraints}
+///     \cgalParamDescription{the domain, as for `swap_edges()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the new vertex (or the vertex already at `p`, or the default handle when refused) and the swaps made
+template <class Tr, class Criterion, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, const Criterion& criterion,
+                                        const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto hint = choose_parameter(get_parameter(np, internal_np::hint), typename Tr::Cell_handle());
+  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
+  const std::size_t max_swaps = choose_parameter(get_parameter(np, internal_np::maximum_swaps), std::size_t(100000));
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return internal::insert_by_swapping(tr, p, criterion, typename Tr::Cell_handle(hint), constraints, perturbation,
+                                        max_swaps);
+  });
 }
 
 } // namespace Edge_swapping_3

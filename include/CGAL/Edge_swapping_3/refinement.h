@@ -12,12 +12,15 @@
 #define CGAL_EDGE_SWAPPING_3_REFINEMENT_H
 
 #include <CGAL/Real_timer.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <cmath>
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <vector>
 
@@ -55,18 +58,44 @@ struct Site_location
   std::array<double, 4> weights;
 };
 
-template <class Tr>
-struct Refinement_options
+/// The paper's cell-wise gradient indicator: the largest difference of the
+/// vertex values along the six edges, times the cube root of the volume.
+template <class Tr, class Value>
+double gradient_indicator(const Tr& tr, typename Tr::Cell_handle c, const Value& value)
 {
-  /// Called for each new vertex, before the next site is chosen: set its
-  /// data (index, field values) there.
-  std::function<void(typename Tr::Vertex_handle, const Site_location<Tr>&)> new_vertex;
-  /// Called after each round (progress, history).
-  std::function<void(const Refinement_round&)> round_visitor;
-  std::size_t max_rounds = 1000;
-};
+  double largest = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+      largest = (std::max)(largest, std::abs(value(c->vertex(i)) - value(c->vertex(j))));
+  const double volume = std::abs(CGAL::to_double(tr.geom_traits().compute_volume_3_object()(
+      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point())));
+  return largest * std::cbrt(volume);
+}
 
 namespace internal {
+
+/// The settings of a refinement, from its named parameters.
+template <class Tr>
+struct Refinement_settings
+{
+  std::function<void(typename Tr::Vertex_handle, const Site_location<Tr>&)> new_vertex;
+  std::function<void(const Refinement_round&)> round_visitor;
+  std::size_t max_rounds = 1000;
+  Perturbation perturbation = CGAL_PERTURBATION;
+};
+
+template <class Tr, class NamedParameters>
+Refinement_settings<Tr> refinement_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Refinement_settings<Tr> s;
+  s.new_vertex = choose_parameter(get_parameter(np, internal_np::new_vertex_visitor), s.new_vertex);
+  s.round_visitor = choose_parameter(get_parameter(np, internal_np::round_visitor), s.round_visitor);
+  s.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), s.max_rounds);
+  s.perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), s.perturbation);
+  return s;
+}
 
 template <class Tr>
 struct Heap_entry
@@ -180,7 +209,7 @@ bool is_refinable(const Tr& tr, typename Tr::Cell_handle c, const Constraints& c
 template <class Tr, class Criterion, class Constraints>
 typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle c, const Criterion& criterion,
                                                const Constraints& constraints,
-                                               const Refinement_options<Tr>& options,
+                                               const Refinement_settings<Tr>& options,
                                                Refinement_report& report)
 {
   typename Tr::Point p;
@@ -192,7 +221,7 @@ typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle 
   }
   Site_location<Tr> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)},
                           barycentric_weights(tr, at, p)};
-  const auto r = insert_by_swapping(tr, p, criterion, at, constraints);
+  const auto r = insert_by_swapping(tr, p, criterion, at, constraints, options.perturbation, 100000);
   CGAL_assertion(r.is_new);
   for(int k = 0; k < number_of_flip_kinds; ++k) report.swaps[k] += r.swaps[k];
   ++report.sites_inserted;
@@ -208,20 +237,10 @@ double cell_aspect_ratio(typename Tr::Cell_handle c, Aspect_ratio_definition def
   return measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
 }
 
-} // namespace internal
-
-/// Incremental mesh generation (paper section 5, Fig. 13): inserts sites at
-/// the circumcenters of refinable cells (circumcenter in the domain) whose
-/// aspect ratio exceeds `target`, worst first, swapping under `criterion`,
-/// until every refinable cell meets the target, `max_sites` sites were
-/// inserted, or a round inserts nothing. One round is one pass over the cells
-/// above the target at its start; cells made during the round wait for the next.
-template <class Tr, class Criterion = Delaunay_criterion, class Constraints = No_constraints>
+template <class Tr, class Criterion, class Constraints>
 Refinement_report refine_by_aspect_ratio(Tr& tr, double target, Aspect_ratio_definition definition,
-                                         std::size_t max_sites,
-                                         const Refinement_options<Tr>& options = Refinement_options<Tr>(),
-                                         const Criterion& criterion = Criterion(),
-                                         const Constraints& constraints = Constraints())
+                                         std::size_t max_sites, const Refinement_settings<Tr>& options,
+                                         const Criterion& criterion, const Constraints& constraints)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   CGAL_precondition(tr.dimension() == 3);
@@ -272,31 +291,10 @@ Refinement_report refine_by_aspect_ratio(Tr& tr, double target, Aspect_ratio_def
   return report;
 }
 
-/// The paper's cell-wise gradient indicator: the largest difference of the
-/// vertex values along the six edges, times the cube root of the volume.
-template <class Tr, class Value>
-double gradient_indicator(const Tr& tr, typename Tr::Cell_handle c, const Value& value)
-{
-  double largest = 0;
-  for(int i = 0; i < 4; ++i)
-    for(int j = i + 1; j < 4; ++j)
-      largest = (std::max)(largest, std::abs(value(c->vertex(i)) - value(c->vertex(j))));
-  const double volume = std::abs(CGAL::to_double(tr.geom_traits().compute_volume_3_object()(
-      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point())));
-  return largest * std::cbrt(volume);
-}
-
-/// Adaptive refinement (paper section 5, Fig. 12): inserts `sites` sites, each
-/// at the circumcenter of the refinable cell of largest `gradient_indicator`
-/// for `value` (a function of a vertex handle), swapping under `criterion`.
-/// After each insertion the cells around the new vertex enter the heap.
-/// `options.new_vertex` must give the new vertex its value (interpolated from
-/// the `Site_location`, or from a user function). One call is one round.
-template <class Tr, class Value, class Criterion = Delaunay_criterion, class Constraints = No_constraints>
+template <class Tr, class Value, class Criterion, class Constraints>
 Refinement_report refine_by_gradient(Tr& tr, const Value& value, std::size_t sites,
-                                     const Refinement_options<Tr>& options = Refinement_options<Tr>(),
-                                     const Criterion& criterion = Criterion(),
-                                     const Constraints& constraints = Constraints())
+                                     const Refinement_settings<Tr>& options, const Criterion& criterion,
+                                     const Constraints& constraints)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   CGAL_precondition(tr.dimension() == 3);
@@ -330,6 +328,112 @@ Refinement_report refine_by_gradient(Tr& tr, const Value& value, std::size_t sit
   if(options.round_visitor) options.round_visitor(r);
   report.seconds = timer.time();
   return report;
+}
+
+} // namespace internal
+
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Incremental mesh generation (paper section 5, Fig. 13): inserts
+/// sites at the circumcenters of refinable cells (circumcenter in the domain,
+/// not encroaching upon a constrained facet) whose aspect ratio exceeds
+/// `target`, worst first, swapping under `criterion`.
+///
+/// It ends when every refinable cell meets the target, `maximum_sites` sites
+/// were inserted, or a round inserts nothing. One round is one pass over the
+/// cells above the target at its start; cells made during the round wait for
+/// the next.
+///
+/// \tparam Tr a `CGAL::Triangulation_3`
+/// \tparam Criterion a model of `SwapCriterion_3`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \param tr the triangulation, of dimension 3
+/// \param target the aspect ratio every refinable cell should meet
+/// \param criterion decides the swaps after each insertion
+/// \param np an optional sequence of named parameters among the ones listed below
+/// \pre `tr.dimension() == 3`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{aspect_ratio_definition}
+///     \cgalParamDescription{the measure}
+///     \cgalParamType{`Edge_swapping_3::Aspect_ratio_definition`}
+///     \cgalParamDefault{`Edge_swapping_3::EDGE_LENGTH_RATIO`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_sites}
+///     \cgalParamDescription{the most sites inserted}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the most rounds}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{new_vertex_visitor}
+///     \cgalParamDescription{called for each new vertex, before the next site is chosen: set its data there}
+///     \cgalParamType{a callable `void(Tr::Vertex_handle, const Edge_swapping_3::Site_location<Tr>&)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{round_visitor}
+///     \cgalParamDescription{called after each round}
+///     \cgalParamType{a callable `void(const Edge_swapping_3::Refinement_round&)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{perturbation}
+///     \cgalParamDescription{how a Delaunay criterion breaks cospherical ties}
+///     \cgalParamType{`Edge_swapping_3::Perturbation`}
+///     \cgalParamDefault{`Edge_swapping_3::CGAL_PERTURBATION`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{facet_is_constrained_map, cell_is_selected_map, mesh_constraints}
+///     \cgalParamDescription{the domain, as for `swap_edges()`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the rounds, the sites inserted and refused, the swaps, whether the target was met
+template <class Tr, class Criterion, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Refinement_report refine_by_aspect_ratio(Tr& tr, double target, const Criterion& criterion,
+                                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Aspect_ratio_definition definition =
+    choose_parameter(get_parameter(np, internal_np::aspect_ratio_definition), EDGE_LENGTH_RATIO);
+  const std::size_t max_sites = choose_parameter(get_parameter(np, internal_np::maximum_sites),
+                                                 (std::numeric_limits<std::size_t>::max)());
+  const auto settings = internal::refinement_settings<Tr>(np);
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return internal::refine_by_aspect_ratio(tr, target, definition, max_sites, settings, criterion, constraints);
+  });
+}
+
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Adaptive refinement (paper section 5, Fig. 12): inserts
+/// `number_of_sites` sites, each at the circumcenter of the refinable cell of
+/// largest `gradient_indicator()` for `value`, swapping under `criterion`.
+///
+/// After each insertion the cells around the new vertex enter the heap. The
+/// `new_vertex_visitor` must give the new vertex its value (interpolated from
+/// the `Site_location`, or from a user function). One call is one round.
+///
+/// \tparam Tr a `CGAL::Triangulation_3`
+/// \tparam Value a callable `double(Tr::Vertex_handle)`
+/// \tparam Criterion a model of `SwapCriterion_3`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \param tr the triangulation, of dimension 3
+/// \param value the solution at a vertex
+/// \param number_of_sites the sites to insert
+/// \param criterion decides the swaps after each insertion
+/// \param np the named parameters of `refine_by_aspect_ratio()` but
+///   `aspect_ratio_definition`, `maximum_sites` and `number_of_iterations`
+/// \pre `tr.dimension() == 3`
+/// \return the round, the sites inserted and refused, the swaps
+template <class Tr, class Value, class Criterion, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Refinement_report refine_by_gradient(Tr& tr, const Value& value, std::size_t number_of_sites, const Criterion& criterion,
+                                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  const auto settings = internal::refinement_settings<Tr>(np);
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return internal::refine_by_gradient(tr, value, number_of_sites, settings, criterion, constraints);
+  });
 }
 
 } // namespace Edge_swapping_3

@@ -24,13 +24,6 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
 
-/// A criterion that declares `static constexpr bool is_delaunay_criterion = true`
-/// (and has a `perturbation`) gets the Delaunay fast path and endings.
-template <class C, class = void>
-struct Is_delaunay_criterion : std::false_type {};
-template <class C>
-struct Is_delaunay_criterion<C, std::enable_if_t<C::is_delaunay_criterion>> : std::true_type {};
-
 /// The settings from `np`; `default_order` when it names no face order.
 template <class NamedParameters>
 Driver_settings driver_settings(const NamedParameters& np, Face_order default_order)
@@ -55,9 +48,11 @@ struct Criterion_rule
 {
   const Criterion& criterion;
 
+  Perturbation perturbation;
+
   bool sees_facet_from_either_side() const
   {
-    if constexpr(Is_delaunay_criterion<Criterion>::value) return criterion.perturbation == CGAL_PERTURBATION;
+    if constexpr(Is_delaunay_criterion<Criterion>::value) return perturbation == CGAL_PERTURBATION;
     else return false;
   }
 
@@ -67,12 +62,13 @@ struct Criterion_rule
     constexpr bool delaunay = Is_delaunay_criterion<Criterion>::value;
     auto& tr = d.triangulation();
     // The exact in-sphere test is cheaper than the classification, and most
-    // facets pass it: for Delaunay, only a failing facet is classified.
+    // facets pass it: for Delaunay, only a failing facet is classified, and
+    // the criterion is not asked again (the test under `perturbation` is it).
     if constexpr(delaunay)
-      if(is_locally_delaunay(tr, c, i, criterion.perturbation)) return;
+      if(is_locally_delaunay(tr, c, i, perturbation)) return;
     const auto conf = classify_facet(tr, c, i);
     if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()) &&
-       criterion(tr, conf))
+       (delaunay || criterion(tr, conf)))
       d.flip(conf);
     else
       d.keep(conf, delaunay, false);
@@ -119,25 +115,24 @@ void decide_delaunay_ending(Swap_report& report, Driver& driver, const Driver_se
   if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
 }
 
-/// Calls `f(driver)` with the driver of `np`. The constraints and the visitor
-/// are copies, as in CGAL: a visitor keeps its state behind a pointer or std::ref.
-template <class Tr, class NamedParameters, class F>
-auto with_driver(Tr& tr, const Driver_settings& s, const NamedParameters& np, F f)
+/// Calls `f(driver)` with the driver of `np`. The visitor is a copy, as in
+/// CGAL: a visitor keeps its state behind a pointer or std::ref.
+template <class Tr, class Constraints, class NamedParameters, class F>
+auto with_driver(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np, F f)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor());
-  Swap_driver<Tr, std::remove_const_t<decltype(constraints)>, decltype(visitor)> driver(tr, s, constraints, visitor);
+  Swap_driver<Tr, Constraints, decltype(visitor)> driver(tr, s, constraints, visitor);
   return f(driver);
 }
 
 /// The helper; its first round visits `seeds` only when there are any.
-template <class Tr, class NamedParameters>
-Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& np,
+template <class Tr, class Constraints, class NamedParameters>
+Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np,
                        const std::vector<Facet_key<Tr>>& seeds = {})
 {
-  return with_driver(tr, s, np, [&](auto& driver) {
+  return with_driver(tr, s, constraints, np, [&](auto& driver) {
     if(s.schedule == WORK_QUEUE) driver.seed(seeds);
     Helper_rule rule;
     Swap_report report = driver.run(rule);
@@ -146,77 +141,42 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const NamedParameters& 
   });
 }
 
-} // namespace internal
-} // namespace Edge_swapping_3
-
-/// \brief Algorithm 3 of the paper: swaps every swappable configuration that
-/// `criterion` (a model of `SwapCriterion_3`) prefers in its alternative form,
-/// until none is left.
-///
-/// With `Edge_swapping_3::Delaunay_criterion` the result is the Delaunay
-/// triangulation (CGAL's, cell for cell, with `CGAL_PERTURBATION`) from any
-/// valid start: plain flips first; where they are stuck (Joe's local optima),
-/// the helper strategy for at most `helper_rounds_before_rebuild` rounds; where
-/// that has not converged, the cells are rebuilt from CGAL's Delaunay
-/// triangulation of the vertices. `report.repair_path` says which step ended
-/// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
-/// whose ending is then CONVERGED or STUCK. A mesh with constraints is never
-/// rebuilt: its repair ends after the helper step.
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{schedule} `WORK_QUEUE` (default) or `PAPER_CYCLES` \cgalParamNEnd
-///   \cgalParamNBegin{face_order} `STORAGE_ORDER` (default: keeps memory locality) or `RANDOM_ORDER`;
-///     the helper step of the repair is in `RANDOM_ORDER` unless this is given \cgalParamNEnd
-///   \cgalParamNBegin{random_seed} `unsigned int`, default 0 \cgalParamNEnd
-///   \cgalParamNBegin{number_of_iterations} the round limit, default 1000 \cgalParamNEnd
-///   \cgalParamNBegin{visitor} a model of `FlipVisitor_3`, default `Default_flip_visitor` \cgalParamNEnd
-///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
-///   \cgalParamNBegin{cycle_visitor} called after each round \cgalParamNEnd
-///   \cgalParamNBegin{record_non_delaunay_facets} `bool`, default false \cgalParamNEnd
-///   \cgalParamNBegin{delaunay_repair} `bool`, default true \cgalParamNEnd
-///   \cgalParamNBegin{helper_rounds_before_rebuild} `std::size_t`, default 100 \cgalParamNEnd
-/// \cgalNamedParamsEnd
-template <class Tr, class Criterion, class NamedParameters = parameters::Default_named_parameters>
-Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
-                                        const NamedParameters& np = parameters::default_values())
+/// `swap_edges` with its domain constraints made.
+template <class Tr, class Criterion, class Constraints, class NamedParameters>
+Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& constraints, const NamedParameters& np)
 {
-  namespace ES = Edge_swapping_3;
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  constexpr bool delaunay = ES::internal::Is_delaunay_criterion<Criterion>::value;
+  constexpr bool delaunay = Is_delaunay_criterion<Criterion>::value;
 
-  ES::internal::Driver_settings s = ES::internal::driver_settings(np, ES::STORAGE_ORDER);
-  if constexpr(delaunay) s.perturbation = criterion.perturbation; // the criterion's tie-breaking decides the ending
-  typedef std::decay_t<decltype(choose_parameter(get_parameter(np, ES::internal_np::mesh_constraints),
-                                                  ES::No_constraints()))> Constraints;
+  const Driver_settings s = driver_settings(np, STORAGE_ORDER);
   // Where plain flips are stuck: the facets left, for the helper's first round.
-  std::vector<ES::internal::Facet_key<Tr>> stuck;
-  ES::Swap_report report = ES::internal::with_driver(tr, s, np, [&](auto& driver) {
-    ES::internal::Criterion_rule<Criterion> rule{criterion};
-    ES::Swap_report r = driver.run(rule);
+  std::vector<Facet_key<Tr>> stuck;
+  Swap_report report = with_driver(tr, s, constraints, np, [&](auto& driver) {
+    Criterion_rule<Criterion> rule{criterion, s.perturbation};
+    Swap_report r = driver.run(rule);
     if constexpr(delaunay)
     {
-      ES::internal::decide_delaunay_ending(r, driver, s);
-      if(r.ending != ES::CONVERGED && s.schedule == ES::WORK_QUEUE) stuck = driver.non_delaunay_facets_kept();
+      decide_delaunay_ending(r, driver, s);
+      if(r.ending != CONVERGED && s.schedule == WORK_QUEUE) stuck = driver.non_delaunay_facets_kept();
     }
     return r;
   });
   if constexpr(delaunay)
   {
-    if(report.ending == ES::CONVERGED || !choose_parameter(get_parameter(np, ES::internal_np::delaunay_repair), true))
+    if(report.ending == CONVERGED || !choose_parameter(get_parameter(np, internal_np::delaunay_repair), true))
       return report;
 
     // Stuck (or out of rounds): the helper, then the rebuild.
     report.stuck_after_plain_flips = report.non_delaunay_facets;
-    ES::internal::Driver_settings hs = ES::internal::driver_settings(np, ES::RANDOM_ORDER);
-    hs.perturbation = criterion.perturbation;
-    hs.max_rounds = choose_parameter(get_parameter(np, ES::internal_np::helper_rounds_before_rebuild), std::size_t(100));
+    Driver_settings hs = driver_settings(np, RANDOM_ORDER);
+    hs.max_rounds = choose_parameter(get_parameter(np, internal_np::helper_rounds_before_rebuild), std::size_t(100));
     // Without tags the helper does nothing on a Delaunay facet: its first
     // round needs only the facets plain flips left.
-    ES::Swap_report helper = ES::internal::run_helper(tr, hs, np, stuck);
-    report.repair_path = ES::HELPER_FLIPS;
+    Swap_report helper = run_helper(tr, hs, constraints, np, stuck);
+    report.repair_path = HELPER_FLIPS;
     report.helper_rounds = helper.number_of_cycles();
-    for(ES::Cycle_record r : helper.cycles)
+    for(Cycle_record r : helper.cycles)
     {
       r.cycle += report.cycles.size();
       report.cycles.push_back(r);
@@ -224,13 +184,14 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
     report.seconds += helper.seconds;
     report.ending = helper.ending;
     report.non_delaunay_facets = helper.non_delaunay_facets;
-    if(report.ending != ES::CONVERGED && std::is_same<Constraints, ES::No_constraints>::value)
+    // A domain mesh is never rebuilt: the rebuild knows no constraint.
+    if(report.ending != CONVERGED && std::is_same<Constraints, No_constraints>::value)
     {
       CGAL::Real_timer timer;
       timer.start();
-      report.repair_path = ES::REBUILT;
-      report.rebuilt_cells = ES::internal::rebuild_as_delaunay(tr);
-      report.ending = ES::CONVERGED;
+      report.repair_path = REBUILT;
+      report.rebuilt_cells = rebuild_as_delaunay(tr);
+      report.ending = CONVERGED;
       report.non_delaunay_facets = 0;
       report.seconds += timer.time();
     }
@@ -238,22 +199,139 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
   return report;
 }
 
+} // namespace internal
+} // namespace Edge_swapping_3
+
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Algorithm 3 of the paper: swaps every swappable configuration that
+/// `criterion` prefers in its alternative form, until none is left.
+///
+/// With a Delaunay criterion (one whose `Is_delaunay_criterion` is true, such
+/// as `Edge_swapping_3::Delaunay_criterion`) the result is the Delaunay
+/// triangulation (CGAL's, cell for cell, with `CGAL_PERTURBATION`) from any
+/// valid start: plain flips first; where they are stuck (Joe's local optima),
+/// the helper strategy for at most `helper_rounds_before_rebuild` rounds; where
+/// that has not converged, the cells are rebuilt from CGAL's Delaunay
+/// triangulation of the vertices. `report.repair_path` says which step ended
+/// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
+/// whose ending is then `CONVERGED` or `STUCK`. A domain mesh is never
+/// rebuilt: its repair ends after the helper step.
+///
+/// \tparam Tr a `CGAL::Triangulation_3` (or a class derived from one, such as the
+///   triangulation of a `Mesh_complex_3_in_triangulation_3`)
+/// \tparam Criterion a model of `SwapCriterion_3`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+///
+/// \param tr the triangulation, of dimension 3; changed in place
+/// \param criterion decides whether the alternative triangulation of five points is better
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \pre `tr.dimension() == 3` and `tr.is_valid()`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{schedule}
+///     \cgalParamDescription{how facets are visited: the work queue (only what changed) or the paper's cycles}
+///     \cgalParamType{`Edge_swapping_3::Schedule`}
+///     \cgalParamDefault{`Edge_swapping_3::WORK_QUEUE`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_order}
+///     \cgalParamDescription{the order of visits within a round; the helper step of the repair is in random
+///       order unless this is given}
+///     \cgalParamType{`Edge_swapping_3::Face_order`}
+///     \cgalParamDefault{`Edge_swapping_3::STORAGE_ORDER` (memory locality)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{the seed of every random choice}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the round (cycle) limit}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{1000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{perturbation}
+///     \cgalParamDescription{how a Delaunay criterion breaks cospherical ties}
+///     \cgalParamType{`Edge_swapping_3::Perturbation`}
+///     \cgalParamDefault{`Edge_swapping_3::CGAL_PERTURBATION` (the result equals CGAL's)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{told before and after every flip}
+///     \cgalParamType{a model of `FlipVisitor_3`}
+///     \cgalParamDefault{`Edge_swapping_3::Default_flip_visitor`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{facet_is_constrained_map}
+///     \cgalParamDescription{the facets that no swap may remove (boundaries, interfaces)}
+///     \cgalParamType{a `ReadablePropertyMap` with `Tr::Facet` as key and `bool` as value; written back at the
+///       end if it is also writable}
+///     \cgalParamDefault{none, or the facets of the complex for a C3T3's triangulation}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cell_is_selected_map}
+///     \cgalParamDescription{the cells that may change; a swap never joins a selected cell with another}
+///     \cgalParamType{a `ReadablePropertyMap` with `Tr::Cell_handle` as key and `bool` as value}
+///     \cgalParamDefault{every cell}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{mesh_constraints}
+///     \cgalParamDescription{a domain given as a model of the package's concept, instead of the two maps}
+///     \cgalParamType{a model of `MeshConstraints_3`}
+///     \cgalParamDefault{from the maps and the cells' subdomain indices}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cycle_visitor}
+///     \cgalParamDescription{called after each round}
+///     \cgalParamType{a callable `void(const Edge_swapping_3::Cycle_record&)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{record_non_delaunay_facets}
+///     \cgalParamDescription{count the non-Delaunay facets after each round (a full pass)}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{delaunay_repair}
+///     \cgalParamDescription{with a Delaunay criterion, go on from a stuck state to the helper and the rebuild}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{helper_rounds_before_rebuild}
+///     \cgalParamDescription{the rounds the helper step of the repair may take}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{100}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \return the report: swaps per round by kind, the ending, the repair path
+template <class Tr, class Criterion, class NamedParameters = parameters::Default_named_parameters>
+Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  return Edge_swapping_3::internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return Edge_swapping_3::internal::swap_edges(tr, criterion, constraints, np);
+  });
+}
+
+/// \ingroup PkgEdgeSwapping3Functions
 /// \brief Algorithm 4 of the paper, the helper strategy, for the Delaunay
 /// criterion: a configuration that is not Delaunay tags its tetrahedra; a
 /// swappable configuration with a tagged tetrahedron is swapped, Delaunay or
 /// not, which lets a non-Delaunay concave configuration out of a local optimum.
 /// A tag lives on its cell until a flip replaces the cell; tags are kept by
 /// the driver, not in the cells. Its termination is not proved: the ending
-/// is CONVERGED, STUCK or CYCLE_LIMIT_REACHED, never repaired.
+/// is `CONVERGED`, `STUCK` or `CYCLE_LIMIT_REACHED`, never repaired.
 ///
-/// Named parameters as `swap_edges`, plus `perturbation` (the tie-breaking of
-/// its Delaunay tests, default `CGAL_PERTURBATION`); no `delaunay_repair`.
-/// Its default face order is `RANDOM_ORDER`: in storage order it can loop
-/// (doc/Edge_swapping_3/findings.md).
+/// \tparam Tr as for `swap_edges()`
+/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \param tr the triangulation, of dimension 3; changed in place
+/// \param np the named parameters of `swap_edges()` but `delaunay_repair` and
+///   `helper_rounds_before_rebuild`; `face_order` defaults to `RANDOM_ORDER`
+///   (in storage order the helper can loop: doc/Edge_swapping_3/findings.md)
+/// \pre `tr.dimension() == 3` and `tr.is_valid()`
+/// \return the report, as for `swap_edges()`
 template <class Tr, class NamedParameters = parameters::Default_named_parameters>
 Edge_swapping_3::Swap_report swap_edges_with_helper(Tr& tr, const NamedParameters& np = parameters::default_values())
 {
-  return Edge_swapping_3::internal::run_helper(tr, Edge_swapping_3::internal::driver_settings(np, Edge_swapping_3::RANDOM_ORDER), np);
+  namespace ES = Edge_swapping_3;
+  return ES::internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    return ES::internal::run_helper(tr, ES::internal::driver_settings(np, ES::RANDOM_ORDER), constraints, np);
+  });
 }
 
 } // namespace CGAL

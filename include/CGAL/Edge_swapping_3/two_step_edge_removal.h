@@ -197,13 +197,14 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int maximum = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
-  std::vector<typename Tr::Cell_handle> created;
-  const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
-  if(plain.removed() || plain.outcome == RING_TOO_LARGE || plain.outcome == EDGE_CONSTRAINED) return plain;
-  return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, visitor, maximum, created);
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    std::vector<typename Tr::Cell_handle> created;
+    const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
+    if(plain.removed() || plain.outcome == RING_TOO_LARGE || plain.outcome == EDGE_CONSTRAINED) return plain;
+    return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, visitor, maximum, created);
+  });
 }
 
 } // namespace Edge_swapping_3

@@ -305,12 +305,13 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                      internal::default_smoothing_steps);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
-  std::vector<typename Tr::Cell_handle> star;
-  return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star);
+  return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
+    std::vector<typename Tr::Cell_handle> star;
+    return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star);
+  });
 }
 
 } // namespace Edge_swapping_3
