@@ -10,6 +10,8 @@ packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeige
 packages+=(tetgen libtet1.5-dev)
 # The conjecture laboratory enumerates triangulations with TOPCOM (and its tests do).
 packages+=(topcom)
+# The suite builds the reference documentation and fails on a warning.
+packages+=(doxygen)
 packages+=("$@")
 
 missing=()

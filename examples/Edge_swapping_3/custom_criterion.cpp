@@ -7,7 +7,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/edge_swapping_3.h>
-#include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

@@ -5,8 +5,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/edge_swapping_3.h>
-#include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
-#include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

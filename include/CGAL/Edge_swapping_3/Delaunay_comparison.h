@@ -14,13 +14,16 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 
+/// \ingroup PkgEdgeSwapping3Reports
+/// The outcome of `compare_with_delaunay()`: a triangulation against CGAL's
+/// `Delaunay_triangulation_3` of its vertices, cell for cell.
 struct Delaunay_comparison
 {
   bool identical = false;              ///< the same set of finite cells
   std::size_t cells = 0;               ///< finite cells of the triangulation compared
   std::size_t delaunay_cells = 0;      ///< finite cells of CGAL's Delaunay triangulation
-  std::size_t cells_not_in_delaunay = 0;
-  std::size_t delaunay_cells_missing = 0;
+  std::size_t cells_not_in_delaunay = 0;  ///< finite cells that CGAL's triangulation does not have
+  std::size_t delaunay_cells_missing = 0; ///< finite cells of CGAL's triangulation that are missing
   std::size_t non_delaunay_facets = 0; ///< facets not locally Delaunay (CGAL's perturbation)
 };
 

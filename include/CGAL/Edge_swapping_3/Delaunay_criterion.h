@@ -63,8 +63,9 @@ std::size_t number_of_non_delaunay_facets(const Tr& tr,
 /// own, it breaks ties as CGAL does.
 struct Delaunay_criterion
 {
-  static constexpr bool is_delaunay_criterion = true;
+  static constexpr bool is_delaunay_criterion = true; ///< see `Is_delaunay_criterion`
 
+  /// Whether the facet `conf` inspects is not locally Delaunay.
   template <class Tr>
   bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
   {

@@ -26,6 +26,7 @@ enum Configuration_kind
   HULL_FACET                ///< not an interior facet: one side is outside the hull
 };
 
+/// The name of `k`, for reports.
 inline const char* configuration_kind_name(Configuration_kind k)
 {
   static const char* names[] = {"two tetrahedra convex", "three tetrahedra convex",
@@ -40,19 +41,23 @@ template <class Tr>
 class Five_point_configuration
 {
 public:
-  typedef typename Tr::Cell_handle Cell_handle;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef Flip_plan<Tr> Plan;
+  typedef typename Tr::Cell_handle Cell_handle;     ///< the triangulation's cell handle
+  typedef typename Tr::Vertex_handle Vertex_handle; ///< the triangulation's vertex handle
+  typedef Flip_plan<Tr> Plan;                       ///< the flip to the alternative
 
+  /// Which of the paper's configurations (Figs. 6 and 7) the five points form.
   Configuration_kind kind() const { return kind_; }
+  /// Whether the alternative triangulation exists and a flip reaches it.
   bool is_swappable() const { return kind_ <= PLANAR_FOUR_FOUR; }
 
-  /// The facet that was inspected.
+  /// The cell of the facet that was inspected.
   Cell_handle cell() const { return cell_; }
+  /// The index of the facet that was inspected in `cell()`.
   int index() const { return index_; }
 
-  /// The tetrahedra of the mesh whose four vertices are among the five (two to four).
+  /// The number of tetrahedra of the mesh whose four vertices are among the five (two to four).
   int number_of_tetrahedra() const { return n_tets_; }
+  /// The `k`-th of them, `0 <= k < number_of_tetrahedra()`.
   Cell_handle tetrahedron(int k) const { return tets_[k]; }
 
   /// The flip to the alternative triangulation; meaningful when swappable.
@@ -60,11 +65,15 @@ public:
   /// planar cases, with the cells on the other side of the plane), its new
   /// cells the alternative.
   const Plan& flip_plan() const { return plan_; }
+  /// The kind of that flip.
   Flip_kind flip_kind() const { return plan_.kind; }
 
   /// Whether the answer also depends on the cells around one edge of the
   /// facet (the 3-2 and the planar cases: how many cells the edge has); if so,
   /// `a` and `b` are its vertices. Otherwise it depends on the two cells alone.
+  /// \param a set to the first vertex of the edge, or the default handle
+  /// \param b set to the second vertex of the edge, or the default handle
+  /// \return whether there is such an edge
   bool depends_on_edge_ring(Vertex_handle& a, Vertex_handle& b) const
   {
     a = ring_edge_[0];
@@ -72,8 +81,10 @@ public:
     return a != Vertex_handle();
   }
 
+  /// \cond SKIP_IN_MANUAL
   template <class T>
   friend Five_point_configuration<T> classify_facet(const T&, typename T::Cell_handle, int);
+  /// \endcond
 
 private:
   Configuration_kind kind_ = HULL_FACET;

@@ -25,8 +25,9 @@ namespace Edge_swapping_3 {
 /// a planar hull face: a 4-4 flip one of whose ring vertices is the infinite vertex.
 enum Flip_kind { FLIP_2_3 = 0, FLIP_3_2 = 1, FLIP_2_2 = 2, FLIP_4_4 = 3 };
 
-constexpr int number_of_flip_kinds = 4;
+constexpr int number_of_flip_kinds = 4; ///< the size of the arrays of swaps by kind
 
+/// The name of `k` ("2-3", ...), for reports.
 inline const char* flip_kind_name(Flip_kind k)
 {
   static const char* names[] = {"2-3", "3-2", "2-2", "4-4"};
@@ -38,17 +39,19 @@ inline const char* flip_kind_name(Flip_kind k)
 template <class Tr>
 struct Flip_plan
 {
-  typedef typename Tr::Cell_handle Cell_handle;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef std::array<Vertex_handle, 4> Tuple;
+  typedef typename Tr::Cell_handle Cell_handle;     ///< the triangulation's cell handle
+  typedef typename Tr::Vertex_handle Vertex_handle; ///< the triangulation's vertex handle
+  typedef std::array<Vertex_handle, 4> Tuple;       ///< the vertices of a cell to be made
 
-  Flip_kind kind = FLIP_2_3;
-  int number_of_old_cells = 0;
-  int number_of_new_cells = 0;
-  std::array<Cell_handle, 4> old_cells;
-  std::array<Tuple, 4> new_cells;
+  Flip_kind kind = FLIP_2_3;             ///< 2-3, 3-2, 2-2 (hull) or 4-4
+  int number_of_old_cells = 0;           ///< the cells the flip removes
+  int number_of_new_cells = 0;           ///< the cells it makes
+  std::array<Cell_handle, 4> old_cells;  ///< `old_cells[0 .. number_of_old_cells)`
+  std::array<Tuple, 4> new_cells;        ///< `new_cells[0 .. number_of_new_cells)`
 
+  /// Appends a cell to be made.
   void add_new_cell(const Tuple& t) { new_cells[number_of_new_cells++] = t; }
+  /// Appends a cell to be removed.
   void add_old_cell(Cell_handle c) { old_cells[number_of_old_cells++] = c; }
 };
 

@@ -21,8 +21,10 @@ namespace Edge_swapping_3 {
 /// pointer or pass `std::ref(visitor)`.
 struct Default_flip_visitor
 {
+  /// Does nothing.
   template <class Tr>
   void before_flip(const Tr&, const Flip_plan<Tr>&) const {}
+  /// Does nothing.
   template <class Tr>
   void after_flip(const Tr&, const Flip_plan<Tr>&, const std::array<typename Tr::Cell_handle, 4>&, int) const {}
 };

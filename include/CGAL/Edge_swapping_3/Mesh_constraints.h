@@ -39,9 +39,12 @@ namespace Edge_swapping_3 {
 /// Model of `MeshConstraints_3` for a plain triangulation: nothing is constrained.
 struct No_constraints
 {
-  struct Cell_data {};
-  struct Facet_data {};
+  /// \name Types and operations of `MeshConstraints_3` (doc/Edge_swapping_3/Concepts/MeshConstraints_3.md)
+  /// @{
+  struct Cell_data {}; ///< the data of a cell (none)
+  struct Facet_data {}; ///< the data of a facet (none)
 
+  /// The data of a cell, and so on: the operations of the concept.
   template <class Cell_handle> Cell_data cell_data(Cell_handle) const { return {}; }
   template <class Cell_handle> void set_cell_data(Cell_handle, const Cell_data&) const {}
   template <class Cell_handle> Facet_data facet_data(Cell_handle, int) const { return {}; }
@@ -49,9 +52,9 @@ struct No_constraints
   Facet_data free_facet_data() const { return {}; }
   template <class Cell_handle> bool is_facet_constrained(Cell_handle, int) const { return false; }
   template <class Cell_handle> bool same_subdomain(Cell_handle, Cell_handle) const { return true; }
-  /// Whether cell `c` belongs to the domain, where points may be inserted. A
-  /// point set's domain is all of space: the infinite cells too.
+  // A point set's domain is all of space: the infinite cells too.
   template <class Tr> bool is_in_domain(const Tr&, typename Tr::Cell_handle) const { return true; }
+  /// @}
 };
 
 /// The data a domain mesh keeps in each cell: its subdomain index (0 is
@@ -59,15 +62,18 @@ struct No_constraints
 /// reference (`no_reference` when the facet is not constrained).
 struct Domain_cell_info
 {
-  static constexpr int no_reference = -1;
-  int subdomain = 0;
+  static constexpr int no_reference = -1; ///< the reference of a facet that is not constrained
+  int subdomain = 0;                      ///< 0 outside the domain
+  /// The boundary reference of facet `i` (the one opposite vertex `i`).
   std::array<int, 4> facet_reference{{no_reference, no_reference, no_reference, no_reference}};
 };
 
 /// Model of `MeshConstraints_3` for cells with `info()` of type `Domain_cell_info`.
 struct Domain_constraints
 {
-  typedef int Cell_data;
+  /// \name Types and operations of `MeshConstraints_3` (doc/Edge_swapping_3/Concepts/MeshConstraints_3.md)
+  /// @{
+  typedef int Cell_data; ///< the subdomain index
   typedef int Facet_data;
 
   template <class Cell_handle> Cell_data cell_data(Cell_handle c) const { return c->info().subdomain; }
@@ -77,7 +83,6 @@ struct Domain_constraints
   {
     c->info().facet_reference[i] = d;
   }
-  /// The data of a facet that is not constrained.
   Facet_data free_facet_data() const { return Domain_cell_info::no_reference; }
   template <class Cell_handle> bool is_facet_constrained(Cell_handle c, int i) const
   {
@@ -91,6 +96,7 @@ struct Domain_constraints
   {
     return !tr.is_infinite(c) && c->info().subdomain != 0;
   }
+  /// @}
 };
 
 /// Model of `MeshConstraints_3` for the triangulation of a
@@ -101,7 +107,9 @@ struct Domain_constraints
 template <class Tr>
 struct Complex_constraints
 {
-  typedef typename Tr::Cell Cell;
+  /// \name Types and operations of `MeshConstraints_3` (doc/Edge_swapping_3/Concepts/MeshConstraints_3.md)
+  /// @{
+  typedef typename Tr::Cell Cell; ///< the triangulation's cell
   typedef std::decay_t<decltype(std::declval<const Cell&>().subdomain_index())> Cell_data;
   typedef std::decay_t<decltype(std::declval<const Cell&>().surface_patch_index(0))> Facet_data;
 
@@ -122,6 +130,7 @@ struct Complex_constraints
   {
     return !tr.is_infinite(c) && c->subdomain_index() != Cell_data();
   }
+  /// @}
 };
 
 namespace internal {
@@ -163,9 +172,13 @@ template <class Tr, class Base, class Cell_map = internal::No_map, class Facet_m
 class Selected_constraints
 {
 public:
+  /// \name Types and operations of `MeshConstraints_3` (doc/Edge_swapping_3/Concepts/MeshConstraints_3.md)
+  /// @{
   typedef std::pair<typename Base::Cell_data, bool> Cell_data;   ///< base data, selected
   typedef std::pair<typename Base::Facet_data, bool> Facet_data; ///< base data, constrained
 
+  /// The constraints of `base`, with the selection of `cells` and the
+  /// constrained facets of `facets` on `tr` added (not read yet).
   Selected_constraints(Tr& tr, const Base& base, const Cell_map& cells, const Facet_map& facets)
     : base_(base), table_(std::make_shared<Table>(tr, cells, facets))
   {}
@@ -198,6 +211,9 @@ public:
   {
     return is_selected(c) && base_.is_in_domain(tr, c);
   }
+  /// @}
+
+  /// Whether `c` is selected (in `cell_is_selected_map`, or made from selected cells).
   template <class Cell_handle> bool is_selected(Cell_handle c) const { return bits(c) & (1u << selected_bit); }
 
   /// Puts the status of the cells read or made into the writable maps.
@@ -206,7 +222,7 @@ public:
     Table& t = *table_;
     for(std::size_t k : t.known)
     {
-      const auto* item = t.index.item(k);
+      auto* item = t.index.item(k);
       if(item == nullptr || !(t.bits[k] & (1u << known_bit))) continue;
       const typename Tr::Cell_handle c = t.tr.tds().cells().iterator_to(*item);
       if(t.tr.is_infinite(c)) continue;
@@ -232,12 +248,20 @@ private:
     std::vector<std::size_t> known; // the slots read or made, for write_back
   };
 
-  template <class Cell_handle> std::size_t slot(Cell_handle c) const
+  // The slot of `c`, its status read from the maps on its first need. A cell
+  // that is being made (`made`: its neighbours are not glued yet) is not
+  // read: every setting of it follows.
+  template <class Cell_handle> std::size_t slot(Cell_handle c, bool made = false) const
   {
     Table& t = *table_;
     const std::size_t k = t.index(c);
     if(k >= t.bits.size()) t.bits.resize((std::max)(t.index.number_of_slots(), k + 1), 0);
-    if(!(t.bits[k] & (1u << known_bit)))
+    if(made && !(t.bits[k] & (1u << known_bit)))
+    {
+      t.bits[k] = std::uint8_t(1u << known_bit);
+      t.known.push_back(k);
+    }
+    else if(!(t.bits[k] & (1u << known_bit)))
     {
       // First need of this cell: its status from the maps. A facet is asked
       // from its finite sides.
@@ -260,7 +284,7 @@ private:
   template <class Cell_handle> std::uint8_t bits(Cell_handle c) const { return table_->bits[slot(c)]; }
   template <class Cell_handle> void set_bit(Cell_handle c, int bit, bool on) const
   {
-    std::uint8_t& b = table_->bits[slot(c)];
+    std::uint8_t& b = table_->bits[slot(c, true)];
     b = std::uint8_t(on ? (b | (1u << bit)) : (b & ~(1u << bit)));
   }
 

@@ -54,8 +54,10 @@ struct Worst_tetrahedron_criterion
 {
   /// A swap must improve the worst value by more than this fraction.
   double relative_tolerance = 1e-9;
-  Measure measure;
+  Measure measure; ///< the measure of one tetrahedron (a model of `TetrahedronMeasure_3`)
 
+  /// Whether the worst tetrahedron of the alternative triangulation of `conf`
+  /// is better than the worst of the current one, beyond the tolerance.
   template <class Tr>
   bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
   {
@@ -80,8 +82,10 @@ struct Is_worst_tetrahedron_criterion
   : decltype(internal::is_worst_tetrahedron_criterion(static_cast<const Criterion*>(nullptr)))
 {};
 
+/// Model of `TetrahedronMeasure_3`: the largest dihedral angle, in degrees.
 struct Largest_dihedral_angle
 {
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -89,8 +93,10 @@ struct Largest_dihedral_angle
   }
 };
 
+/// Model of `TetrahedronMeasure_3`: the smallest dihedral angle, in degrees.
 struct Smallest_dihedral_angle
 {
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -111,7 +117,8 @@ enum Aspect_ratio_definition
 /// mesh the worst went from 178.97 to 180.0 degrees).
 struct Aspect_ratio
 {
-  Aspect_ratio_definition definition = RADIUS_RATIO;
+  Aspect_ratio_definition definition = RADIUS_RATIO; ///< which of the paper's two ratios
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -124,6 +131,7 @@ struct Aspect_ratio
 /// well-shaped faces, scores near 0, which the edge length ratio misses.
 struct Normalized_radius_ratio
 {
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -134,6 +142,7 @@ struct Normalized_radius_ratio
 /// The smallest dihedral sine, normalized (`minimum_dihedral_sine`; larger is better).
 struct Minimum_dihedral_sine
 {
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -144,6 +153,7 @@ struct Minimum_dihedral_sine
 /// The volume-length ratio (`volume_length_ratio`; larger is better).
 struct Volume_length_ratio
 {
+  /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
@@ -171,6 +181,7 @@ typedef Worst_tetrahedron_criterion<Smallest_dihedral_angle, false> Max_min_dihe
 struct Aspect_ratio_criterion : Worst_tetrahedron_criterion<Aspect_ratio, true>
 {
   Aspect_ratio_criterion() = default;
+  /// The criterion of the ratio `d`.
   explicit Aspect_ratio_criterion(Aspect_ratio_definition d) { measure.definition = d; }
 };
 
@@ -179,6 +190,7 @@ struct Aspect_ratio_criterion : Worst_tetrahedron_criterion<Aspect_ratio, true>
 /// and a tetrahedron.
 struct Min_edges_criterion
 {
+  /// Whether the alternative has fewer edges (a 2-3 flip adds one, a 3-2 flip removes one).
   template <class Tr>
   bool operator()(const Tr&, const Five_point_configuration<Tr>& conf) const
   {

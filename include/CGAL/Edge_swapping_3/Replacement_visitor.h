@@ -25,10 +25,13 @@ namespace Edge_swapping_3 {
 /// pointer or pass `std::ref(visitor)`.
 struct Default_replacement_visitor
 {
+  /// Does nothing.
   template <class Tr>
   void before_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
+  /// Does nothing.
   template <class Tr>
   void after_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
+  /// Does nothing.
   template <class Tr>
   void after_move(const Tr&, typename Tr::Vertex_handle, const typename Tr::Point&) const {}
 };

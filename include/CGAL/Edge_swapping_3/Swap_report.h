@@ -42,9 +42,12 @@ struct Cycle_record
   std::size_t cells = 0;                                  ///< finite cells after the round
   long long non_delaunay_facets = -1;                     ///< after the round; -1 if not recorded
 
+  /// The swaps of every kind in the round.
   std::size_t total_swaps() const { return swaps[0] + swaps[1] + swaps[2] + swaps[3]; }
 };
 
+/// \ingroup PkgEdgeSwapping3Reports
+/// How a swap driver ended.
 enum Swap_ending
 {
   CONVERGED,           ///< nothing left to do (for Delaunay: and every facet is Delaunay)
@@ -52,6 +55,7 @@ enum Swap_ending
   CYCLE_LIMIT_REACHED  ///< still swapping after `number_of_iterations` rounds (possibly cycling)
 };
 
+/// The name of `e`, for reports.
 inline const char* swap_ending_name(Swap_ending e)
 {
   static const char* names[] = {"converged", "stuck", "cycle limit reached"};
@@ -66,35 +70,39 @@ enum Delaunay_repair_path
   REBUILT        ///< the helper had not converged within its bound; the cells were rebuilt
 };
 
+/// The name of `p`, for reports.
 inline const char* delaunay_repair_path_name(Delaunay_repair_path p)
 {
   static const char* names[] = {"plain flips", "helper flips", "rebuilt"};
   return names[p];
 }
 
+/// \ingroup PkgEdgeSwapping3Reports
+/// What a swap driver (`swap_edges()`, `swap_edges_with_helper()`) did and how it ended.
 struct Swap_report
 {
-  std::vector<Cycle_record> cycles;
-  Swap_ending ending = CONVERGED;
+  std::vector<Cycle_record> cycles; ///< one record per round (the paper's cycle)
+  Swap_ending ending = CONVERGED;   ///< converged, stuck, or the round limit reached
   /// Facets not locally Delaunay at the end (Delaunay criterion and helper only; else -1).
   long long non_delaunay_facets = -1;
-  double seconds = 0;
+  double seconds = 0; ///< the time of the run
 
-  /// Delaunay repair only: the last step taken, the non-Delaunay facets that
-  /// plain flips left, the rounds of the helper step, and the finite cells
-  /// the rebuild replaced (0 if it was not needed).
+  /// Delaunay repair only: the last step taken.
   Delaunay_repair_path repair_path = PLAIN_FLIPS;
-  long long stuck_after_plain_flips = 0;
-  std::size_t helper_rounds = 0;
-  std::size_t rebuilt_cells = 0;
+  long long stuck_after_plain_flips = 0; ///< Delaunay repair: the non-Delaunay facets plain flips left
+  std::size_t helper_rounds = 0;         ///< Delaunay repair: the rounds of the helper step
+  std::size_t rebuilt_cells = 0;         ///< Delaunay repair: the finite cells the rebuild replaced (0 if not needed)
 
+  /// The number of rounds.
   std::size_t number_of_cycles() const { return cycles.size(); }
+  /// The facets visited in all rounds.
   std::size_t number_of_visits() const
   {
     std::size_t n = 0;
     for(const auto& c : cycles) n += c.visits;
     return n;
   }
+  /// The swaps of all rounds, by kind (indexed by `Flip_kind`).
   std::array<std::size_t, number_of_flip_kinds> total_swaps() const
   {
     std::array<std::size_t, number_of_flip_kinds> t{};

@@ -49,9 +49,9 @@ struct Insertion_report
 {
   /// The vertex of each point, in the order of the input (equal points share one).
   std::vector<typename Tr::Vertex_handle> vertices;
-  std::array<std::size_t, number_of_flip_kinds> swaps{};
-  std::size_t stuck_facets = 0; ///< should stay 0 (Joe 1991)
-  double seconds = 0;
+  std::array<std::size_t, number_of_flip_kinds> swaps{}; ///< the swaps of all insertions, by kind
+  std::size_t stuck_facets = 0;                          ///< should stay 0 (Joe 1991)
+  double seconds = 0;                                    ///< the time of the run
 };
 
 /// \ingroup PkgEdgeSwapping3Functions
@@ -64,7 +64,7 @@ struct Insertion_report
 /// coplanar) `tr` is left of lower dimension and is not Delaunay.
 ///
 /// \tparam Tr a `CGAL::Triangulation_3`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 /// \param tr an empty triangulation
 /// \param points the points
 /// \param np an optional sequence of named parameters among the ones listed below

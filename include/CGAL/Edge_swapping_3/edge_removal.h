@@ -42,6 +42,7 @@ enum Edge_removal_outcome
   NO_IMPROVEMENT          ///< the best triangulation of the ring is not better than the tetrahedra there
 };
 
+/// The name of `o`, for reports.
 inline const char* edge_removal_outcome_name(Edge_removal_outcome o)
 {
   static const char* names[] = {"removed", "ring too large", "constrained", "no valid triangulation", "no improvement"};
@@ -51,7 +52,7 @@ inline const char* edge_removal_outcome_name(Edge_removal_outcome o)
 /// The report of `remove_edge`.
 struct Edge_removal_report
 {
-  Edge_removal_outcome outcome = NO_VALID_TRIANGULATION;
+  Edge_removal_outcome outcome = NO_VALID_TRIANGULATION; ///< removed, or why not
   int ring_size = 0;            ///< n: the cells around the edge (infinite ones included)
   bool on_hull = false;         ///< whether the edge is on the hull (two of those cells are infinite)
   double quality_before = 0;    ///< the worst value of the measure over the finite ones
@@ -59,6 +60,7 @@ struct Edge_removal_report
   int new_cells = 0;            ///< 2n-4 (infinite ones included) when removed, else 0
   int steps = 0;                ///< 1 when removed, 2 when removed in two steps (`remove_edge_in_two_steps`)
 
+  /// Whether the edge was removed.
   bool removed() const { return outcome == EDGE_REMOVED; }
 };
 

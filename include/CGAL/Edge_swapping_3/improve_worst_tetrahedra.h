@@ -64,9 +64,11 @@ struct Quality_report
   std::size_t faces_removed = 0;                ///< triangles they removed
   std::size_t smoothing_moves = 0;              ///< smoothing moves made (a vertex may move more than once)
   std::array<std::size_t, number_of_flip_kinds> flips{}; ///< flips by kind
-  double worst_before = 0, worst_after = 0;     ///< the worst value over the finite cells in the domain
-  double seconds = 0;
+  double worst_before = 0;                      ///< the worst value over the finite cells in the domain, before
+  double worst_after = 0;                       ///< the same after
+  double seconds = 0;                           ///< the time of the run
 
+  /// The operations made, flips included.
   std::size_t number_of_operations() const
   {
     std::size_t n = edge_removals + two_step_removals + face_removals + smoothing_moves;

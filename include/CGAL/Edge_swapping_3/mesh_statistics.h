@@ -11,15 +11,22 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 
+/// \ingroup PkgEdgeSwapping3Reports
+/// The counts of the paper's tables and the extreme qualities of a mesh (`mesh_statistics()`).
 struct Mesh_statistics
 {
-  std::size_t vertices = 0, edges = 0, faces = 0, cells = 0; ///< finite ones, hull included
-  double min_dihedral_angle = HUGE_VAL;                        ///< degrees
-  double max_dihedral_angle = 0;
-  double max_edge_length_ratio = 0;
-  double max_radius_ratio = 0;
+  std::size_t vertices = 0;             ///< finite vertices
+  std::size_t edges = 0;                ///< finite edges, hull included
+  std::size_t faces = 0;                ///< finite facets, hull included
+  std::size_t cells = 0;                ///< finite cells
+  double min_dihedral_angle = HUGE_VAL; ///< degrees
+  double max_dihedral_angle = 0;        ///< degrees
+  double max_edge_length_ratio = 0;     ///< longest over shortest edge, worst cell
+  double max_radius_ratio = 0;          ///< circumradius over inradius, worst cell
 };
 
+/// \ingroup PkgEdgeSwapping3Functions
+/// The counts and extreme qualities of the finite part of `tr`.
 template <class Tr>
 Mesh_statistics mesh_statistics(const Tr& tr)
 {

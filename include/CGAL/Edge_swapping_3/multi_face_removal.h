@@ -44,6 +44,7 @@ enum Multi_face_removal_outcome
   NO_FACE_IMPROVEMENT     ///< the best disk is not better than the tetrahedra it removes
 };
 
+/// The name of `o`, for reports.
 inline const char* multi_face_removal_outcome_name(Multi_face_removal_outcome o)
 {
   static const char* names[] = {"removed", "not interior", "constrained", "no valid removal", "no improvement"};
@@ -53,12 +54,13 @@ inline const char* multi_face_removal_outcome_name(Multi_face_removal_outcome o)
 /// The report of `remove_faces`.
 struct Multi_face_removal_report
 {
-  Multi_face_removal_outcome outcome = NO_VALID_REMOVAL;
+  Multi_face_removal_outcome outcome = NO_VALID_REMOVAL; ///< removed, or why not
   int faces = 0;               ///< m, the triangles removed (when removed), or the sandwiched triangles explored
   double quality_before = 0;   ///< the worst value of the measure over the 2m removed tetrahedra
   double quality_after = 0;    ///< the worst over the m + 2 new ones (when a disk is valid)
   int new_cells = 0;           ///< m + 2 when removed, else 0
 
+  /// Whether the faces were removed.
   bool removed() const { return outcome == FACES_REMOVED; }
 };
 

@@ -17,6 +17,7 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace point_families {
 
+/// `n` points uniform in the unit cube, from `seed`.
 template <class Point>
 std::vector<Point> random_in_cube(std::size_t n, unsigned seed)
 {
@@ -26,6 +27,7 @@ std::vector<Point> random_in_cube(std::size_t n, unsigned seed)
   return p;
 }
 
+/// `n` points uniform in the unit ball, from `seed`.
 template <class Point>
 std::vector<Point> random_in_ball(std::size_t n, unsigned seed)
 {
@@ -54,6 +56,7 @@ std::vector<Point> on_sphere(std::size_t n, unsigned seed)
   return p;
 }
 
+/// The `nx` by `ny` by `nz` integer grid.
 template <class Point>
 std::vector<Point> grid(int nx, int ny, int nz)
 {

@@ -33,15 +33,16 @@ struct Insertion_result
   /// the default handle when the point was refused (outside the domain, or on
   /// a constrained facet or edge, or not locatable in dimension 3).
   typename Tr::Vertex_handle vertex;
-  typename Tr::Locate_type location = Tr::CELL;
-  bool is_new = false;
-  std::array<std::size_t, number_of_flip_kinds> swaps{};
+  typename Tr::Locate_type location = Tr::CELL;           ///< where the walk found the point
+  bool is_new = false;                                    ///< whether a vertex was made
+  std::array<std::size_t, number_of_flip_kinds> swaps{};  ///< the swaps after the split, by kind
   /// Delaunay only: link facets left not locally Delaunay with no flip to
   /// make (never observed; Joe 1991 proves it cannot happen).
   std::size_t stuck_facets = 0;
   /// Other criteria: the swap limit was reached (the front did not settle).
   bool swap_limit_reached = false;
 
+  /// The swaps of every kind.
   std::size_t total_swaps() const { return swaps[0] + swaps[1] + swaps[2] + swaps[3]; }
 };
 
@@ -347,7 +348,7 @@ Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, con
 ///
 /// \tparam Tr a `CGAL::Triangulation_3`
 /// \tparam Criterion a model of `SwapCriterion_3`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 /// \param tr the triangulation, of dimension 3
 /// \param p the point to insert
 /// \param criterion decides the swaps after the split

@@ -25,7 +25,7 @@ namespace Edge_swapping_3 {
 /// quality measures: products of up to six coordinate differences) stays
 /// finite and clear of underflow.
 constexpr double max_coordinate = 1e30;
-constexpr double min_nonzero_coordinate = 1e-30;
+constexpr double min_nonzero_coordinate = 1e-30; ///< the smallest magnitude of a nonzero coordinate
 
 /// An empty string if `x` is a supported coordinate; otherwise why not.
 inline std::string coordinate_problem(double x)

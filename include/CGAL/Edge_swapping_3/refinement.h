@@ -32,21 +32,22 @@ namespace Edge_swapping_3 {
 /// for gradients, one batch of sites.
 struct Refinement_round
 {
-  std::size_t round = 0;
+  std::size_t round = 0;            ///< 0 for the mesh before refinement
   std::size_t sites_inserted = 0;   ///< in this round
   std::size_t vertices = 0;         ///< in the mesh after the round
   double worst_refinable = 0;       ///< aspect ratio: worst over refinable cells after the round
   double worst = 0;                 ///< aspect ratio: worst over all cells of the domain after the round
 };
 
+/// What a refinement (`refine_by_aspect_ratio()`, `refine_by_gradient()`) did.
 struct Refinement_report
 {
   std::vector<Refinement_round> rounds; ///< rounds[0] is the mesh before refinement
-  std::size_t sites_inserted = 0;
+  std::size_t sites_inserted = 0;       ///< new vertices
   std::size_t sites_refused = 0;        ///< circumcenters outside the domain, on a constraint or encroaching upon one
-  std::array<std::size_t, number_of_flip_kinds> swaps{};
+  std::array<std::size_t, number_of_flip_kinds> swaps{}; ///< the swaps after the insertions, by kind
   bool target_met = false;              ///< aspect ratio only
-  double seconds = 0;
+  double seconds = 0;                   ///< the time of the run
 };
 
 /// Where a new site fell: the cell that contained it and the site's
@@ -54,8 +55,8 @@ struct Refinement_report
 template <class Tr>
 struct Site_location
 {
-  std::array<typename Tr::Vertex_handle, 4> vertices;
-  std::array<double, 4> weights;
+  std::array<typename Tr::Vertex_handle, 4> vertices; ///< the vertices of the cell the site fell in
+  std::array<double, 4> weights;                      ///< the site's barycentric coordinates in it
 };
 
 /// The paper's cell-wise gradient indicator: the largest difference of the
@@ -345,7 +346,7 @@ Refinement_report refine_by_gradient(Tr& tr, const Value& value, std::size_t sit
 ///
 /// \tparam Tr a `CGAL::Triangulation_3`
 /// \tparam Criterion a model of `SwapCriterion_3`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 /// \param tr the triangulation, of dimension 3
 /// \param target the aspect ratio every refinable cell should meet
 /// \param criterion decides the swaps after each insertion
@@ -417,7 +418,7 @@ Refinement_report refine_by_aspect_ratio(Tr& tr, double target, const Criterion&
 /// \tparam Tr a `CGAL::Triangulation_3`
 /// \tparam Value a callable `double(Tr::Vertex_handle)`
 /// \tparam Criterion a model of `SwapCriterion_3`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 /// \param tr the triangulation, of dimension 3
 /// \param value the solution at a vertex
 /// \param number_of_sites the sites to insert

@@ -17,6 +17,8 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 
+/// \ingroup PkgEdgeSwapping3Reports
+/// The order in which points are inserted.
 enum Insertion_order
 {
   SPATIAL_ORDER, ///< CGAL's spatial_sort (Hilbert order with BRIO): fast

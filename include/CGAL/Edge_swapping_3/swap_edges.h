@@ -220,7 +220,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 /// \tparam Tr a `CGAL::Triangulation_3` (or a class derived from one, such as the
 ///   triangulation of a `Mesh_complex_3_in_triangulation_3`)
 /// \tparam Criterion a model of `SwapCriterion_3`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 ///
 /// \param tr the triangulation, of dimension 3; changed in place
 /// \param criterion decides whether the alternative triangulation of five points is better
@@ -318,7 +318,7 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 /// is `CONVERGED`, `STUCK` or `CYCLE_LIMIT_REACHED`, never repaired.
 ///
 /// \tparam Tr as for `swap_edges()`
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
 /// \param tr the triangulation, of dimension 3; changed in place
 /// \param np the named parameters of `swap_edges()` but `delaunay_repair` and
 ///   `helper_rounds_before_rebuild`; `face_order` defaults to `RANDOM_ORDER`

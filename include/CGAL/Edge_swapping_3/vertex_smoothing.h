@@ -42,6 +42,7 @@ enum Smoothing_outcome
   NO_SMOOTHING_IMPROVEMENT ///< no position found beats the present one beyond the tolerance
 };
 
+/// The name of `o`, for reports.
 inline const char* smoothing_outcome_name(Smoothing_outcome o)
 {
   static const char* const names[] = {"moved", "on boundary", "no improvement"};
@@ -51,12 +52,13 @@ inline const char* smoothing_outcome_name(Smoothing_outcome o)
 /// The report of `smooth_vertex`.
 struct Smoothing_report
 {
-  Smoothing_outcome outcome = NO_SMOOTHING_IMPROVEMENT;
+  Smoothing_outcome outcome = NO_SMOOTHING_IMPROVEMENT; ///< moved, or why not
   int star_size = 0;          ///< the cells around the vertex
   double quality_before = 0;  ///< the worst value of the measure over them
   double quality_after = 0;   ///< the same at the new position (equal to before when not moved)
   int steps = 0;              ///< positions taken (the smart Laplacian counts as one)
 
+  /// Whether the vertex moved.
   bool moved() const { return outcome == VERTEX_MOVED; }
 };
 

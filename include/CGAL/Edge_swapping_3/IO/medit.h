@@ -22,14 +22,16 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace IO {
 
+/// \ingroup PkgEdgeSwapping3IO
+/// The sections of a Medit `.mesh` file that the package reads.
 struct Medit_mesh
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<int> point_references;
-  std::vector<std::array<std::size_t, 3>> triangles;   ///< 0-based point indices
-  std::vector<int> triangle_references;
-  std::vector<std::array<std::size_t, 4>> tetrahedra;  ///< 0-based point indices
-  std::vector<int> tetrahedron_references;
+  std::vector<std::array<double, 3>> points;           ///< `Vertices`
+  std::vector<int> point_references;                   ///< their references
+  std::vector<std::array<std::size_t, 3>> triangles;   ///< `Triangles`, 0-based point indices
+  std::vector<int> triangle_references;                ///< their references (boundary markers)
+  std::vector<std::array<std::size_t, 4>> tetrahedra;  ///< `Tetrahedra`, 0-based point indices
+  std::vector<int> tetrahedron_references;             ///< their references (subdomains)
 };
 
 /// Reads the text of a Medit file; `name` is the file name used in messages.
@@ -136,6 +138,8 @@ inline Medit_mesh read_medit_text(const std::string& name, std::string_view text
   return m;
 }
 
+/// \ingroup PkgEdgeSwapping3IO
+/// Reads a Medit `.mesh` file; a bad file throws an error that names it, the line and the problem.
 inline Medit_mesh read_medit_file(const std::string& path) { return read_medit_text(path, read_text_file(path)); }
 
 /// Writes a Medit file (each coordinate in the shortest text that reads back exactly).

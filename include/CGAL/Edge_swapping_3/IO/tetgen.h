@@ -22,11 +22,13 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace IO {
 
+/// \ingroup PkgEdgeSwapping3IO
+/// A TetGen `.node` file: points and their attributes.
 struct Node_file
 {
-  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<double, 3>> points;   ///< in the file's order
   std::vector<std::vector<double>> attributes; ///< per point, possibly empty
-  int first_index = 1;
+  int first_index = 1;                         ///< the number of the first point (0 or 1)
 };
 
 namespace internal {
@@ -127,6 +129,8 @@ inline Node_file read_node_text(const std::string& name, std::string_view text)
   return f;
 }
 
+/// \ingroup PkgEdgeSwapping3IO
+/// Reads a TetGen `.node` file; a bad file throws an error that names it, the line and the problem.
 inline Node_file read_node_file(const std::string& path) { return read_node_text(path, read_text_file(path)); }
 
 /// Reads the text of an .ele file: tetrahedra as 0-based point indices.
@@ -167,6 +171,9 @@ read_ele_text(const std::string& name, std::string_view text, std::size_t number
   return cells;
 }
 
+/// \ingroup PkgEdgeSwapping3IO
+/// Reads a TetGen `.ele` file of `number_of_points` points numbered from `first_index`: its
+/// tetrahedra as 0-based point indices; a bad file throws an error that names it, the line and the problem.
 inline std::vector<std::array<std::size_t, 4>>
 read_ele_file(const std::string& path, std::size_t number_of_points, int first_index)
 {

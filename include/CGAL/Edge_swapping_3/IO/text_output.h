@@ -35,11 +35,16 @@ inline double finite_value(double v, const char* what, const std::string* field 
 class Text_sink
 {
 public:
+  /// A sink that writes to `out`.
   explicit Text_sink(std::ostream& out) : out_(out) { buffer_.reserve(block + 64); }
   ~Text_sink() { flush(); }
   Text_sink(const Text_sink&) = delete;
   Text_sink& operator=(const Text_sink&) = delete;
 
+  /// \name Appending text and numbers
+  /// @{
+
+  /// Appends `v` (a double in its shortest form that reads back the same).
   Text_sink& operator<<(double v) { return number(v); }
   Text_sink& operator<<(char c)
   {
@@ -55,6 +60,9 @@ public:
   Text_sink& operator<<(const std::string& text) { return *this << std::string_view(text); }
   template <class Integer, class = std::enable_if_t<std::is_integral<Integer>::value>>
   Text_sink& operator<<(Integer v) { return number(v); }
+  /// @}
+
+  /// Hands the buffer to the stream.
 
   void flush()
   {

@@ -21,8 +21,11 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace IO {
 
+/// Arrays of values by name, one value per point or per cell.
 typedef std::vector<std::pair<std::string, std::vector<double>>> Named_fields;
 
+/// \ingroup PkgEdgeSwapping3IO
+/// Writes a VTK unstructured grid (`.vtu`, ASCII) of tetrahedra with point and cell fields.
 inline void write_vtu_file(std::ostream& stream, const std::vector<std::array<double, 3>>& points,
                            const std::vector<std::array<std::size_t, 4>>& tetrahedra,
                            const Named_fields& point_fields, const Named_fields& cell_fields)
@@ -60,9 +63,10 @@ inline void write_vtu_file(std::ostream& stream, const std::vector<std::array<do
 /// What `read_vtu_file` returns.
 struct Vtu_mesh
 {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<std::size_t, 4>> tetrahedra;
-  Named_fields point_fields, cell_fields;
+  std::vector<std::array<double, 3>> points;          ///< the points
+  std::vector<std::array<std::size_t, 4>> tetrahedra; ///< 0-based point indices
+  Named_fields point_fields;                          ///< the `PointData` arrays of one component
+  Named_fields cell_fields;                           ///< the `CellData` arrays of one component
 };
 
 namespace internal {
@@ -282,6 +286,8 @@ inline Vtu_mesh read_vtu_text(const std::string& name, std::string_view text)
   return m;
 }
 
+/// \ingroup PkgEdgeSwapping3IO
+/// Reads a `.vtu` file of tetrahedra; a bad file throws an error that names it and the problem.
 inline Vtu_mesh read_vtu_file(const std::string& path) { return read_vtu_text(path, read_text_file(path)); }
 
 } // namespace IO

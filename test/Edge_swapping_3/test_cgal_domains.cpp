@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Domains in CGAL's vocabulary: facet_is_constrained_map and
+// cell_is_selected_map on a plain triangulation, the subdomain and surface
+// patch indices of a triangulation that Tetrahedral_remeshing has processed,
+// and a user's wrapper of the Delaunay criterion that keeps its fast path.
+
+#include "test_common.h"
+#include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
+#include <CGAL/tetrahedral_remeshing.h>
+#include <boost/property_map/property_map.hpp>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+using namespace test;
+
+namespace {
+
+typedef std::array<Point, 3> Facet_points;
+
+template <class T>
+Facet_points facet_points(const T& tr, typename T::Cell_handle c, int i)
+{
+  Facet_points f;
+  for(int k = 0; k < 3; ++k) f[k] = c->vertex(tr.vertex_triple_index(i, k))->point();
+  std::sort(f.begin(), f.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+  return f;
+}
+
+template <class T>
+Cell_points cell_points(typename T::Cell_handle c)
+{
+  Cell_points p = {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()};
+  std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+  return p;
+}
+
+template <class T>
+bool has_facet(const T& tr, const Facet_points& f)
+{
+  typename T::Vertex_handle v[3];
+  for(int k = 0; k < 3; ++k)
+    if(!tr.is_vertex(f[k], v[k])) return false;
+  typename T::Cell_handle c;
+  int i, j, l;
+  return tr.is_facet(v[0], v[1], v[2], c, i, j, l);
+}
+
+// The Remeshing triangulation's facets of the complex (from both sides), with
+// their patch index, and the exact volume of each subdomain.
+typedef CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<K> Remeshing_tr;
+
+std::multiset<std::pair<Facet_points, int>> complex_facets(const Remeshing_tr& tr)
+{
+  std::multiset<std::pair<Facet_points, int>> s;
+  for(auto c : tr.all_cell_handles())
+    for(int i = 0; i < 4; ++i)
+      if(c->is_facet_on_surface(i)) s.insert({facet_points(tr, c, i), int(c->surface_patch_index(i))});
+  return s;
+}
+
+std::map<int, CGAL::Exact_rational> subdomain_volumes(const Remeshing_tr& tr)
+{
+  std::map<int, CGAL::Exact_rational> v;
+  for(auto c : tr.finite_cell_handles())
+    v[int(c->subdomain_index())] +=
+      exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  return v;
+}
+
+// Random points in the unit cube, triangulated without flips; cells of
+// centroid x < 1/2 in subdomain 1, the others in 2; the hull and the facets
+// between the two subdomains in the complex (patches 1 and 2); then
+// Tetrahedral_remeshing's isotropic remeshing, as a user's mesh would be.
+Remeshing_tr remeshed_two_subdomains(unsigned seed)
+{
+  Remeshing_tr tr;
+  for(const Point& p : random_in_cube(400, seed)) tr.insert(p);
+  for(auto c : tr.finite_cell_handles())
+  {
+    double x = 0;
+    for(int k = 0; k < 4; ++k) x += c->vertex(k)->point().x() / 4;
+    c->set_subdomain_index(x < 0.5 ? 1 : 2);
+  }
+  CGAL::tetrahedral_isotropic_remeshing(tr, 0.15, CGAL::parameters::number_of_iterations(2));
+  // Remeshing keeps the interface and the hull (subdomain 0 outside) in its
+  // complex: the facets between different subdomains.
+  for(auto c : tr.all_cell_handles())
+    for(int i = 0; i < 4; ++i)
+    {
+      const auto n = c->neighbor(i);
+      const int a = tr.is_infinite(c) ? 0 : int(c->subdomain_index()), b = tr.is_infinite(n) ? 0 : int(n->subdomain_index());
+      if(tr.is_infinite(c)) c->set_subdomain_index(0);
+      c->set_surface_patch_index(i, a != b ? std::max(a, b) : 0);
+    }
+  return tr;
+}
+
+template <class Tr>
+struct Counting_delaunay_wrapper
+{
+  static constexpr bool is_delaunay_criterion = true; // keeps the fast path and the endings
+  std::size_t* calls;
+  bool operator()(const Tr& tr, const ES::Five_point_configuration<Tr>& conf) const
+  {
+    ++*calls;
+    return ES::Delaunay_criterion()(tr, conf);
+  }
+};
+
+} // namespace
+
+TEST_CASE("CGAL's domain maps: constrained facets stay, unselected cells stay, the maps are written back",
+          "[domain][cgal vocabulary]")
+{
+  const unsigned seed = 21;
+  INFO("seed " << seed);
+  Tr tr;
+  ES::insert_by_placing(tr, random_in_cube(600, seed));
+  // Constrained: the facets whose three vertices lie in x < 0.3; selected: the
+  // cells with a vertex in x > 0.6 (the rest is frozen).
+  std::map<std::pair<Tr::Cell_handle, int>, bool> constrained;
+  std::unordered_map<Tr::Cell_handle, bool, CGAL::Handle_hash_function> selected;
+  std::set<Facet_points> constrained_before;
+  std::set<Cell_points> frozen_before;
+  for(auto c : tr.finite_cell_handles())
+  {
+    bool sel = false;
+    for(int k = 0; k < 4; ++k) sel = sel || c->vertex(k)->point().x() > 0.6;
+    selected[c] = sel;
+    if(!sel) frozen_before.insert(cell_points<Tr>(c));
+    for(int i = 0; i < 4; ++i)
+    {
+      bool low = true;
+      for(int k = 0; k < 3; ++k) low = low && c->vertex(tr.vertex_triple_index(i, k))->point().x() < 0.3;
+      constrained[{c, i}] = low;
+      if(low) constrained_before.insert(facet_points(tr, c, i));
+    }
+  }
+  REQUIRE(!constrained_before.empty());
+  REQUIRE(!frozen_before.empty());
+  const auto facet_map = boost::make_assoc_property_map(constrained);
+  const auto cell_map = boost::make_assoc_property_map(selected);
+
+  const auto report = CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(),
+                                       CGAL::parameters::facet_is_constrained_map(facet_map).cell_is_selected_map(cell_map));
+  const auto swaps = report.total_swaps();
+  REQUIRE(swaps[0] + swaps[1] > 0);
+  REQUIRE(tr.is_valid());
+  for(const auto& f : constrained_before) REQUIRE(has_facet(tr, f));
+  const auto after = cell_set(tr);
+  for(const auto& c : frozen_before) REQUIRE(std::binary_search(after.begin(), after.end(), c, [](const Cell_points& a, const Cell_points& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(),
+                                        [](const Point& p, const Point& q) { return CGAL::compare_xyz(p, q) == CGAL::SMALLER; });
+  }));
+  // Written back: every cell now in the mesh has its status in the maps.
+  std::size_t unselected = 0, marked = 0;
+  for(auto c : tr.finite_cell_handles())
+  {
+    REQUIRE(selected.count(c) == 1);
+    unselected += !selected[c];
+    for(int i = 0; i < 4; ++i) marked += constrained[{c, i}];
+  }
+  REQUIRE(unselected == frozen_before.size());
+  REQUIRE(marked >= constrained_before.size());
+
+  // Without the maps the same run changes the frozen cells and removes some of the facets.
+  Tr free_tr;
+  ES::insert_by_placing(free_tr, random_in_cube(600, seed));
+  CGAL::swap_edges(free_tr, ES::Min_max_dihedral_angle_criterion());
+  std::size_t lost = 0;
+  for(const auto& f : constrained_before) lost += !has_facet(free_tr, f);
+  REQUIRE(lost > 0);
+}
+
+TEST_CASE("A user's wrapper of the Delaunay criterion keeps the fast path and the repair", "[drivers][cgal vocabulary]")
+{
+  for(unsigned seed = 1; seed <= 3; ++seed)
+  {
+    INFO("seed " << seed);
+    Tr tr;
+    ES::insert_by_placing(tr, random_in_cube(2000, seed));
+    std::size_t calls = 0;
+    const auto report = CGAL::swap_edges(tr, Counting_delaunay_wrapper<Tr>{&calls});
+    REQUIRE(report.ending == ES::CONVERGED);
+    REQUIRE(report.non_delaunay_facets == 0); // a Delaunay ending is decided, not -1
+    REQUIRE(calls == 0);                       // the in-sphere test decided every visit
+    REQUIRE(ES::compare_with_delaunay(tr).identical);
+  }
+}
+
+TEST_CASE("A triangulation that Tetrahedral_remeshing processed: swaps, worst first, insertion and refinement keep "
+          "its complex and subdomains", "[domain][cgal vocabulary]")
+{
+  const unsigned seed = 8;
+  INFO("seed " << seed);
+  Remeshing_tr tr = remeshed_two_subdomains(seed);
+  const auto facets = complex_facets(tr);
+  const auto volumes = subdomain_volumes(tr);
+  REQUIRE(volumes.size() == 2);
+  REQUIRE(facets.size() > 100);
+  auto require_kept = [&] {
+    REQUIRE(tr.is_valid());
+    REQUIRE(complex_facets(tr) == facets);
+    REQUIRE(subdomain_volumes(tr) == volumes);
+  };
+
+  // No parameter: the cells' own indices are the domain.
+  const auto swapped = CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion());
+  REQUIRE(swapped.total_swaps()[0] + swapped.total_swaps()[1] > 0);
+  require_kept();
+
+  const auto worst = ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion());
+  REQUIRE(worst.worst_after >= worst.worst_before);
+  require_kept();
+
+  // Insertion: points inside the subdomains go in; their cells take the
+  // subdomain of the cell they split.
+  std::size_t inserted = 0;
+  for(const Point& p : random_in_cube(50, seed + 1))
+  {
+    const auto r = ES::insert_by_swapping(tr, p, ES::Min_max_dihedral_angle_criterion());
+    inserted += r.is_new;
+  }
+  REQUIRE(inserted > 25);
+  require_kept();
+
+  const auto refined = ES::refine_by_aspect_ratio(tr, 2.0, ES::Min_max_dihedral_angle_criterion(),
+                                                  ES::parameters::maximum_sites(200));
+  REQUIRE(refined.sites_inserted > 0);
+  require_kept();
+}
