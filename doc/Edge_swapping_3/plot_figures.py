@@ -27,9 +27,9 @@ ax.set_title("Swaps per cycle, 1,000 random points, placing start"); ax.legend()
 fig.tight_layout(); fig.savefig(f"{out}/swaps_per_cycle.png", dpi=120)
 
 # Fig. 10: dihedral-angle histogram before and after MinMax, with the largest
-# angle of the cells that touch the hull apart from that of the others: the
-# flat slivers on the hull of random points (an angle near 180 degrees) have
-# no interior facet whose flip could remove them.
+# angle of the cells with a hull facet apart from that of the others (the
+# angles near 180 degrees are flat slivers in the layer of points along the
+# hull).
 def read_mesh(stem):
     with open(f"{data}/{stem}.node") as f:
         head = f.readline().split()
@@ -74,7 +74,7 @@ for name, stem, label in (("del.json", "del", "Delaunay"), ("minmax.json", "minm
     edges = [h["bin_start"] + h["bin_width"] * k for k in range(len(h["histogram"]))]
     hull, inner = largest_by_side(stem)
     ax.step(edges, h["histogram"], where="post",
-            label=f"{label}: max {inner:.1f} deg inside, {hull:.1f} deg at the hull")
+            label=f"{label}: max {hull:.1f} (cells on the hull), {inner:.1f} (others)")
 ax.set_xlabel("dihedral angle (degrees)"); ax.set_ylabel("number of angles"); ax.legend(fontsize=8)
 ax.set_title("Dihedral angles, 1,000 random points")
 fig.tight_layout(); fig.savefig(f"{out}/dihedral_histogram.png", dpi=120)

@@ -4,6 +4,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H
 #define CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/perturbed_predicates.h>
@@ -32,8 +33,8 @@ bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i,
   const auto n = c->neighbor(i);
   const auto m = n->vertex(n->index(c));
   if(tr.is_infinite(m))
-    return internal::side_of_sphere(tr, n, c->vertex(i)->point(), perturb) != ON_BOUNDED_SIDE;
-  return internal::side_of_sphere(tr, c, m->point(), perturb) != ON_BOUNDED_SIDE;
+    return internal::side_of_sphere(tr, n, internal::bare_point(c->vertex(i)->point()), perturb) != ON_BOUNDED_SIDE;
+  return internal::side_of_sphere(tr, c, internal::bare_point(m->point()), perturb) != ON_BOUNDED_SIDE;
 }
 
 /// The number of facets (finite or not) of `tr` that are not locally Delaunay.

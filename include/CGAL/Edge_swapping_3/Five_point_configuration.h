@@ -7,6 +7,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_FIVE_POINT_CONFIGURATION_H
 #define CGAL_EDGE_SWAPPING_3_FIVE_POINT_CONFIGURATION_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/Flip_plan.h>
 #include <CGAL/Edge_swapping_3/internal/edge_ring.h>
 
@@ -125,9 +126,9 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
   for(int k = 0; k < 4; ++k)
   {
     if(k == i) continue;
-    std::array<const typename Tr::Point*, 4> p;
+    std::array<const typename Tr::Geom_traits::Point_3*, 4> p;
     for(int m = 0; m < 4; ++m)
-      p[m] = (m == k) ? &e->point() : &c->vertex(m)->point();
+      p[m] = (m == k) ? &internal::bare_point(e->point()) : &internal::bare_point(c->vertex(m)->point());
     const Orientation o = orientation(*p[0], *p[1], *p[2], *p[3]);
     if(o == POSITIVE) ++pos;
     else if(o == ZERO) { ++zero; k_zero = k; }

@@ -11,6 +11,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_FLIP_PLAN_H
 #define CGAL_EDGE_SWAPPING_3_FLIP_PLAN_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/assertions.h>
 #include <CGAL/enum.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
@@ -108,7 +109,7 @@ Orientation planned_cell_orientation(const Tr& tr, const Tuple& t,
   for(int k = 0; k < 4; ++k)
     if(tr.is_infinite(t[k])) inf = k;
   if(inf < 0)
-    return orientation(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point());
+    return orientation(internal::bare_point(t[0]->point()), internal::bare_point(t[1]->point()), internal::bare_point(t[2]->point()), internal::bare_point(t[3]->point()));
 
   for(int m = 0; m < n_others; ++m)
   {
@@ -118,7 +119,7 @@ Orientation planned_cell_orientation(const Tr& tr, const Tuple& t,
     Tuple u = t;
     u[inf] = s;
     // Replacing the infinite vertex by a point beyond the facet is POSITIVE.
-    if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) == POSITIVE)
+    if(orientation(internal::bare_point(u[0]->point()), internal::bare_point(u[1]->point()), internal::bare_point(u[2]->point()), internal::bare_point(u[3]->point())) == POSITIVE)
       return NEGATIVE;
   }
   return POSITIVE;

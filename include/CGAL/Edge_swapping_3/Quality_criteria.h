@@ -12,6 +12,7 @@
 
 #include <type_traits>
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 
@@ -35,15 +36,15 @@ std::pair<double, double> worst_current_and_alternative(const Tr& tr,
   {
     const auto c = plan.old_cells[k];
     if(tr.is_infinite(c)) continue;
-    current = worse(current, measure(c->vertex(0)->point(), c->vertex(1)->point(),
-                                     c->vertex(2)->point(), c->vertex(3)->point()));
+    current = worse(current, measure(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()),
+                                     internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point())));
   }
   for(int k = 0; k < plan.number_of_new_cells; ++k)
   {
     const auto& t = plan.new_cells[k];
     if(tr.is_infinite(t[0]) || tr.is_infinite(t[1]) || tr.is_infinite(t[2]) || tr.is_infinite(t[3]))
       continue;
-    alternative = worse(alternative, measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()));
+    alternative = worse(alternative, measure(internal::bare_point(t[0]->point()), internal::bare_point(t[1]->point()), internal::bare_point(t[2]->point()), internal::bare_point(t[3]->point())));
   }
   return {current, alternative};
 }

@@ -13,6 +13,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
 #define CGAL_EDGE_SWAPPING_3_EDGE_REMOVAL_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
@@ -267,7 +268,7 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
   }
 
   // Scores: larger is better.
-  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto value = [&](const Tuple& t) { return criterion.measure(internal::bare_point(t[0]->point()), internal::bare_point(t[1]->point()), internal::bare_point(t[2]->point()), internal::bare_point(t[3]->point())); };
   auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
   double before = HUGE_VAL;
   for(const auto c : star.cells)

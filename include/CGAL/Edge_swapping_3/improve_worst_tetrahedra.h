@@ -14,6 +14,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
 #define CGAL_EDGE_SWAPPING_3_IMPROVE_WORST_TETRAHEDRA_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
@@ -139,8 +140,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   timer.start();
 
   auto score = [&](Cell_handle c) {
-    const double v = criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                       c->vertex(3)->point());
+    const double v = criterion.measure(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()), internal::bare_point(c->vertex(2)->point()),
+                                       internal::bare_point(c->vertex(3)->point()));
     return larger_is_worse ? -v : v;
   };
   // Cells outside the domain (subdomain 0 of a domain mesh) are neither

@@ -4,6 +4,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_MESH_STATISTICS_H
 #define CGAL_EDGE_SWAPPING_3_MESH_STATISTICS_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <algorithm>
 #include <cmath>
@@ -37,10 +38,10 @@ Mesh_statistics mesh_statistics(const Tr& tr)
   s.cells = tr.number_of_finite_cells();
   for(auto c : tr.finite_cell_handles())
   {
-    const auto& p0 = c->vertex(0)->point();
-    const auto& p1 = c->vertex(1)->point();
-    const auto& p2 = c->vertex(2)->point();
-    const auto& p3 = c->vertex(3)->point();
+    const auto& p0 = internal::bare_point(c->vertex(0)->point());
+    const auto& p1 = internal::bare_point(c->vertex(1)->point());
+    const auto& p2 = internal::bare_point(c->vertex(2)->point());
+    const auto& p3 = internal::bare_point(c->vertex(3)->point());
     for(double a : dihedral_angles(p0, p1, p2, p3))
     {
       s.min_dihedral_angle = (std::min)(s.min_dihedral_angle, a);

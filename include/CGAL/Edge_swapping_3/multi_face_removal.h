@@ -14,6 +14,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_MULTI_FACE_REMOVAL_H
 #define CGAL_EDGE_SWAPPING_3_MULTI_FACE_REMOVAL_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>
 #include <CGAL/Edge_swapping_3/Flip_plan.h>
@@ -148,7 +149,7 @@ private:
     const Vertex_handle p = nodes_[n].t[k], q = nodes_[n].t[(k + 1) % 3];
     const Tuple stop_cell = {p, q, w_, u_};
     double stop = -HUGE_VAL;
-    if(tr_.geom_traits().orientation_3_object()(p->point(), q->point(), w_->point(), u_->point()) == POSITIVE)
+    if(tr_.geom_traits().orientation_3_object()(internal::bare_point(p->point()), internal::bare_point(q->point()), internal::bare_point(w_->point()), internal::bare_point(u_->point())) == POSITIVE)
       stop = score_(stop_cell);
     double go_on = -HUGE_VAL;
     const int c = nodes_[n].child[k];
@@ -283,7 +284,7 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   }
   const Vertex_handle u = c->vertex(f.second), w = d->vertex(d->index(c));
 
-  auto value = [&](const Tuple& t) { return criterion.measure(t[0]->point(), t[1]->point(), t[2]->point(), t[3]->point()); };
+  auto value = [&](const Tuple& t) { return criterion.measure(internal::bare_point(t[0]->point()), internal::bare_point(t[1]->point()), internal::bare_point(t[2]->point()), internal::bare_point(t[3]->point())); };
   auto score = [&](const Tuple& t) { return larger_is_worse ? -value(t) : value(t); };
   // Going on across edge k of a node removes the facets (p, q, u) and
   // (p, q, w) and the triangle across: none may be constrained, and the

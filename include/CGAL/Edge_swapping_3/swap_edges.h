@@ -132,6 +132,8 @@ template <class Tr, class Constraints, class NamedParameters>
 Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np,
                        const std::vector<Facet_key<Tr>>& seeds = {})
 {
+  static_assert(!Is_weighted_point<typename Tr::Point>::value,
+                "the helper strategy is for Delaunay triangulations of bare points");
   return with_driver(tr, s, constraints, np, [&](auto& driver) {
     if(s.schedule == WORK_QUEUE) driver.seed(seeds);
     Helper_rule rule;
@@ -148,6 +150,8 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   constexpr bool delaunay = Is_delaunay_criterion<Criterion>::value;
+  static_assert(!delaunay || !Is_weighted_point<typename Tr::Point>::value,
+                "a regular triangulation needs the power criterion, not the Delaunay one (not in the package yet)");
 
   const Driver_settings s = driver_settings(np, STORAGE_ORDER);
   // Where plain flips are stuck: the facets left, for the helper's first round.

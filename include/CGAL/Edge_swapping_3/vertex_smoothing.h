@@ -20,6 +20,7 @@
 #define CGAL_EDGE_SWAPPING_3_VERTEX_SMOOTHING_H
 
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
@@ -75,7 +76,7 @@ template <class Tr, class Measure, bool larger_is_worse>
 class Vertex_star
 {
 public:
-  typedef typename Tr::Point Point;
+  typedef typename Tr::Geom_traits::Point_3 Point; // bare: a regular triangulation's points are weighted
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
 
@@ -90,7 +91,7 @@ public:
       for(int i = 0; i < 4; ++i)
       {
         if(c->vertex(i) == v) index = i;
-        else if(!tr.is_infinite(c->vertex(i))) p[i] = c->vertex(i)->point();
+        else if(!tr.is_infinite(c->vertex(i))) p[i] = internal::bare_point(c->vertex(i)->point());
       }
       corners_.push_back({p, index});
     }
@@ -173,7 +174,7 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
                                const Constraints& constraints, Visitor& visitor, int maximum_steps,
                                std::vector<typename Tr::Cell_handle>& star_cells)
 {
-  typedef typename Tr::Point Point;
+  typedef typename Tr::Geom_traits::Point_3 Point;
   CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(v));
   Smoothing_report report;
   const Vertex_star<Tr, Measure, larger_is_worse> star(tr, v, criterion.measure);
@@ -192,9 +193,9 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   // score b, as the criteria decide (the measures are positive).
   auto bar = [&](double b, double tolerance) { return larger_is_worse ? b * (1 - tolerance) : b * (1 + tolerance); };
 
-  const Vec start = position(v->point());
+  const Vec start = position(internal::bare_point(v->point()));
   Vec best = start;
-  const double start_score = star.worst(v->point());
+  const double start_score = star.worst(internal::bare_point(v->point()));
   double best_score = start_score;
   report.quality_before = measure_of(best_score);
 
@@ -202,7 +203,7 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   std::vector<Vec> neighbours;
   for(auto c : star.cells())
     for(int i = 0; i < 4; ++i)
-      if(c->vertex(i) != v) neighbours.push_back(position(c->vertex(i)->point()));
+      if(c->vertex(i) != v) neighbours.push_back(position(internal::bare_point(c->vertex(i)->point())));
   Vec centroid{0, 0, 0};
   double shortest = HUGE_VAL, total = 0;
   for(const Vec& n : neighbours)
@@ -271,8 +272,8 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 
   if(report.steps > 0 && best_score > bar(start_score, smoothing_gain))
   {
-    const Point old_point = v->point();
-    v->set_point(point(best));
+    const typename Tr::Point old_point = v->point();
+    v->set_point(internal::moved_point(old_point, point(best))); // a weight stays
     visitor_of(visitor).after_move(tr, v, old_point);
     report.outcome = VERTEX_MOVED;
     report.quality_after = measure_of(best_score);

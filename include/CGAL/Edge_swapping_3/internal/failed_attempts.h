@@ -9,6 +9,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_FAILED_ATTEMPTS_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_FAILED_ATTEMPTS_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
@@ -27,7 +28,7 @@ std::uint64_t vertex_signature(const Tr& tr, typename Tr::Vertex_handle v)
 {
   std::uint64_t h = mix_bits(std::uint64_t(address_of(v)));
   if(tr.is_infinite(v)) return h;
-  const auto& p = v->point();
+  const auto& p = internal::bare_point(v->point());
   for(double x : {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())})
   {
     std::uint64_t bits;

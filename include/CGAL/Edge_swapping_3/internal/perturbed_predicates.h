@@ -11,6 +11,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_PERTURBED_PREDICATES_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_PERTURBED_PREDICATES_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/enum.h>
 #include <algorithm>
 
@@ -102,22 +103,22 @@ Bounded_side coplanar_side_of_bounded_circle(const Gt& gt,
 // facet, and with the coplanar points inside the facet's circumcircle.
 template <class Tr>
 Bounded_side side_of_sphere(const Tr& tr, typename Tr::Cell_handle c,
-                            const typename Tr::Point& p, bool perturb)
+                            const typename Tr::Geom_traits::Point_3& p, bool perturb)
 {
   const auto& gt = tr.geom_traits();
   int inf = -1;
   if(!c->has_vertex(tr.infinite_vertex(), inf))
-    return Bounded_side(side_of_oriented_sphere(gt, c->vertex(0)->point(), c->vertex(1)->point(),
-                                                c->vertex(2)->point(), c->vertex(3)->point(),
+    return Bounded_side(side_of_oriented_sphere(gt, internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()),
+                                                internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point()),
                                                 p, perturb));
 
   // The finite facet, ordered so that replacing the infinite vertex by p keeps
   // the cell's orientation (the same orders as CGAL, which matters for the
   // last case of the coplanar perturbation).
   static const int order[4][3] = {{2, 1, 3}, {2, 3, 0}, {1, 0, 3}, {0, 1, 2}};
-  const auto& q0 = c->vertex(order[inf][0])->point();
-  const auto& q1 = c->vertex(order[inf][1])->point();
-  const auto& q2 = c->vertex(order[inf][2])->point();
+  const auto& q0 = internal::bare_point(c->vertex(order[inf][0])->point());
+  const auto& q1 = internal::bare_point(c->vertex(order[inf][1])->point());
+  const auto& q2 = internal::bare_point(c->vertex(order[inf][2])->point());
   const Orientation o = gt.orientation_3_object()(q0, q1, q2, p);
   if(o != COPLANAR)
     return Bounded_side(o);

@@ -15,6 +15,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_SWAP_DRIVER_H
 
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
@@ -72,7 +73,7 @@ bool holds_facet(const Tr& tr, typename Tr::Cell_handle c, int i)
   const auto n = c->neighbor(i);
   if(tr.is_infinite(c) || tr.is_infinite(n)) return false;
   const auto m = n->vertex(n->index(c));
-  return tr.geom_traits().compare_xyz_3_object()(c->vertex(i)->point(), m->point()) == SMALLER;
+  return tr.geom_traits().compare_xyz_3_object()(internal::bare_point(c->vertex(i)->point()), internal::bare_point(m->point())) == SMALLER;
 }
 
 /// Whether `rule` may see each facet from either of its cells in round 1. A
@@ -112,7 +113,7 @@ struct Edge_point_hash
   template <class Key>
   std::size_t operator()(const Key& e) const
   {
-    return std::size_t(bits_of(e.a->point()) + bits_of(e.b->point()));
+    return std::size_t(bits_of(internal::bare_point(e.a->point())) + bits_of(internal::bare_point(e.b->point())));
   }
 };
 
