@@ -25,6 +25,7 @@
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Regular_criterion.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <CGAL/Edge_swapping_3/mesh_statistics.h>

@@ -9,11 +9,13 @@
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
 #include <CGAL/make_mesh_3.h>
 #include <CGAL/tetrahedral_remeshing.h>
 #include <boost/property_map/property_map.hpp>
 #include <map>
+#include <random>
 #include <set>
 #include <unordered_map>
 
@@ -30,6 +32,7 @@ Point bare(const P& p)
   return ES::internal::bare_point(p);
 }
 
+
 template <class T>
 Facet_points facet_points(const T& tr, typename T::Cell_handle c, int i)
 {
@@ -42,7 +45,8 @@ Facet_points facet_points(const T& tr, typename T::Cell_handle c, int i)
 template <class T>
 Cell_points cell_points(typename T::Cell_handle c)
 {
-  Cell_points p = {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()};
+  Cell_points p = {bare(c->vertex(0)->point()), bare(c->vertex(1)->point()), bare(c->vertex(2)->point()),
+                   bare(c->vertex(3)->point())};
   std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
   return p;
 }
@@ -111,7 +115,7 @@ C3t3 mesh_of_two_half_balls()
 // and positive orientations): the swaps leave it not regular, on purpose.
 bool is_valid_triangulation(const Mesh_tr& tr)
 {
-  typedef CGAL::Triangulation_3<Mesh_tr::Geom_traits, Mesh_tr::Triangulation_data_structure> Base;
+  typedef Mesh_tr::Tr_Base Base;
   return static_cast<const Base&>(tr).is_valid();
 }
 
@@ -308,4 +312,97 @@ TEST_CASE("Mesh_3's output as it is: swaps and the worst-first optimizer keep it
   REQUIRE(worst.worst_after > worst.worst_before);
   REQUIRE(worst.smoothing_moves > 0);
   require_kept();
+}
+
+namespace {
+
+typedef CGAL::Regular_triangulation_3<K> Regular_tr;
+typedef K::Weighted_point_3 Weighted_point;
+
+// The finite cells as sorted bare-point quadruples, and the vertices with their weights.
+std::set<Cell_points> regular_cells(const Regular_tr& tr)
+{
+  std::set<Cell_points> s;
+  for(auto c : tr.finite_cell_handles()) s.insert(cell_points<Regular_tr>(c));
+  return s;
+}
+
+std::set<std::pair<Point, double>> weighted_vertices(const Regular_tr& tr)
+{
+  std::set<std::pair<Point, double>> s;
+  for(auto v : tr.finite_vertex_handles()) s.insert({v->point().point(), CGAL::to_double(v->point().weight())});
+  return s;
+}
+
+void require_cgal_regular(const std::vector<Weighted_point>& points, ES::Insertion_order order)
+{
+  Regular_tr tr;
+  const auto report = ES::regular_by_insertion(tr, points, ES::parameters::insertion_order(order));
+  const Regular_tr cgal(points.begin(), points.end());
+  REQUIRE(report.stuck_facets == 0);
+  REQUIRE(tr.is_valid()); // CGAL's own check: regular (the power test) and valid
+  REQUIRE(tr.number_of_vertices() == cgal.number_of_vertices());
+  REQUIRE(weighted_vertices(tr) == weighted_vertices(cgal));
+  REQUIRE(regular_cells(tr) == regular_cells(cgal));
+  std::size_t vertices = 0;
+  for(auto v : report.vertices) vertices += (v != Regular_tr::Vertex_handle());
+  REQUIRE(vertices == tr.number_of_vertices()); // a redundant point has no vertex
+}
+
+} // namespace
+
+TEST_CASE("Flip insertion of weighted points equals CGAL's Regular_triangulation_3 cell for cell",
+          "[insertion][exactness][regular]")
+{
+  for(unsigned seed = 1; seed <= 3; ++seed)
+    for(double largest_weight : {0.0, 0.001, 0.01, 0.05})
+    {
+      // Larger weights make more points redundant: from none to most of them.
+      INFO("seed " << seed << ", weights in [0, " << largest_weight << ")");
+      CGAL::Random rng(seed);
+      std::vector<Weighted_point> points;
+      for(const Point& p : random_in_cube(1500, seed))
+        points.emplace_back(p, largest_weight > 0 ? rng.get_double(0, largest_weight) : 0.0);
+      require_cgal_regular(points, seed == 1 ? ES::INPUT_ORDER : ES::SPATIAL_ORDER);
+    }
+}
+
+TEST_CASE("Flip insertion of weighted points on a grid: equal and alternating weights (power ties broken as CGAL does)",
+          "[insertion][exactness][regular]")
+{
+  for(double heavy : {0.25, 0.6})
+    for(auto order : {ES::INPUT_ORDER, ES::SPATIAL_ORDER})
+    {
+      // Equal weights: every power sphere of the grid is degenerate, as for
+      // Delaunay; alternating weights 0 and 0.6: ties of another kind.
+      INFO("heavy weight " << heavy << ", " << (order == ES::INPUT_ORDER ? "input" : "spatial") << " order");
+      std::vector<Weighted_point> points;
+      for(const Point& p : grid(6, 6, 6))
+      {
+        const int parity = int(CGAL::to_double(p.x() + p.y() + p.z())) % 2;
+        points.emplace_back(p, heavy == 0.25 ? 0.25 : (parity ? 0.0 : heavy));
+      }
+      require_cgal_regular(points, order);
+    }
+}
+
+TEST_CASE("Flip insertion of weighted points on grids with integer weights: redundant vertices on facets and edges",
+          "[insertion][exactness][regular]")
+{
+  // Weights 0 to 3 on integer points: many power ties, and vertices made
+  // redundant that lie on a facet or an edge of the cells replacing them
+  // (removed by the degenerate forms of the 4-1 flip), on the hull too.
+  for(unsigned seed = 1; seed <= 12; ++seed)
+  {
+    INFO("seed " << seed);
+    std::mt19937 rng(seed);
+    std::vector<Weighted_point> points;
+    for(const Point& p : grid(5, 5, 5)) points.emplace_back(p, double(rng() % 4));
+    std::shuffle(points.begin(), points.end(), rng);
+    require_cgal_regular(points, seed % 2 ? ES::INPUT_ORDER : ES::SPATIAL_ORDER);
+  }
+  std::vector<Weighted_point> points;
+  for(const Point& p : grid(6, 6, 6))
+    points.emplace_back(p, double(int(CGAL::to_double(7 * p.x() + 3 * p.y() + p.z())) % 4));
+  require_cgal_regular(points, ES::SPATIAL_ORDER);
 }

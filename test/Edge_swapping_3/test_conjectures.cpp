@@ -27,7 +27,7 @@ xp::Experiment_case load_case(const std::string& name)
 void build_start(xp::Plain_triangulation& tr, const xp::Experiment_case& c)
 {
   if(c.start == "placing")
-    ES::insert_by_placing(tr, c.points, ES::INPUT_ORDER);
+    ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER));
   else
   {
     std::vector<xp::Plain_triangulation::Vertex_handle> vertices;
@@ -130,7 +130,7 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
   ES::internal::Swap_driver<xp::Plain_triangulation, ES::No_constraints, ES::Default_flip_visitor> tracer(
     tr, settings, constraints, visitor);
   auto rule = [&](auto& d, Cell_handle h, int i) {
-    const bool delaunay = ES::is_locally_delaunay(tr, h, i, ES::CGAL_PERTURBATION);
+    const bool delaunay = ES::is_locally_delaunay(tr, h, i);
     if(delaunay && !d.is_tagged(h) && !d.is_tagged(h->neighbor(i))) return;
     const auto conf = ES::classify_facet(tr, h, i);
     if(!delaunay)
@@ -162,7 +162,7 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
     }
   REQUIRE(total == 12);
   WARN("help swaps: " << help << " of " << total);
-  REQUIRE(ES::number_of_non_delaunay_facets(tr, ES::CGAL_PERTURBATION) == 0);
+  REQUIRE(ES::number_of_non_delaunay_facets(tr) == 0);
 }
 
 TEST_CASE("Fixed: the 199 cospherical points' long helper runs came from the drivers, not the strategy", "[conjectures]")

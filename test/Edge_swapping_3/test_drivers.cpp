@@ -435,7 +435,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
 {
   const auto c = xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
   REQUIRE(c.start == "placing");
-  auto start = [&](Tr& tr) { ES::insert_by_placing(tr, c.points, ES::INPUT_ORDER); };
+  auto start = [&](Tr& tr) { ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER)); };
 
   SECTION("the paper's Algorithm 3 alone is stuck")
   {

@@ -41,7 +41,7 @@ TEST_CASE("Helper strategy from placing starts equals CGAL's Delaunay triangulat
         INFO("family " << family.name << ", seed " << seed << ", placing in "
                        << (order == ES::SPATIAL_ORDER ? "spatial" : "input") << " order, " << schedule_name(schedule));
         Tr tr;
-        ES::insert_by_placing(tr, family.points, order);
+        ES::insert_by_placing(tr, family.points, ES::parameters::insertion_order(order));
         const auto report = CGAL::swap_edges_with_helper(tr, random_order(seed, schedule));
         require_equal_to_cgal(tr, report);
       }
@@ -164,11 +164,11 @@ TEST_CASE("Without perturbation - a cospherical set ends locally Delaunay but ma
   // The cube corners: all eight cospherical. Any triangulation is Delaunay
   // without the perturbation, so no swap is made.
   Tr tr;
-  ES::insert_by_placing(tr, grid(2, 2, 2), ES::INPUT_ORDER);
+  ES::insert_by_placing(tr, grid(2, 2, 2), ES::parameters::insertion_order(ES::INPUT_ORDER));
   const auto report = CGAL::swap_edges(tr, ES::Delaunay_criterion(), ES::parameters::perturbation(ES::NO_PERTURBATION));
   REQUIRE(report.ending == ES::CONVERGED);
   REQUIRE(report.total_swaps()[0] + report.total_swaps()[1] + report.total_swaps()[2] + report.total_swaps()[3] == 0);
-  REQUIRE(ES::number_of_non_delaunay_facets(tr, ES::NO_PERTURBATION) == 0);
+  REQUIRE(ES::number_of_non_delaunay_facets(tr, ES::parameters::perturbation(ES::NO_PERTURBATION)) == 0);
   // With CGAL's perturbation the same start is swapped to CGAL's triangulation.
   const auto perturbed = CGAL::swap_edges(tr, ES::Delaunay_criterion());
   REQUIRE(perturbed.ending == ES::CONVERGED);

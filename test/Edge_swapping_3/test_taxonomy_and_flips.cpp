@@ -13,7 +13,7 @@ namespace {
 Tr place(const std::vector<Point>& points)
 {
   Tr tr;
-  ES::insert_by_placing(tr, points, ES::INPUT_ORDER);
+  ES::insert_by_placing(tr, points, ES::parameters::insertion_order(ES::INPUT_ORDER));
   REQUIRE(tr.dimension() == 3);
   return tr;
 }

@@ -27,7 +27,7 @@ inline int run_check(const std::string& path)
   // triangulation, which is unique: CGAL's. Only a mesh that is not
   // Delaunay is compared cell for cell (a second triangulation in memory).
   namespace ES = CGAL::Edge_swapping_3;
-  const std::size_t non_delaunay = ES::number_of_non_delaunay_facets(tr, ES::CGAL_PERTURBATION);
+  const std::size_t non_delaunay = ES::number_of_non_delaunay_facets(tr);
   ES::Delaunay_comparison cmp;
   if(non_delaunay == 0)
   {

@@ -120,7 +120,7 @@ inline void run_insertion(Plain_triangulation& tr, const Experiment_case& c, Exp
 /// triangulation. Throws Usage_error for points that cannot be triangulated.
 inline Experiment_outcome run_case(const Experiment_case& c)
 {
-  const std::string problem = ES::point_set_problem(c.points, K());
+  const std::string problem = ES::point_set_problem(c.points);
   if(!problem.empty()) throw Usage_error(problem);
   Experiment_outcome o;
   CGAL::Real_timer timer;
@@ -131,7 +131,7 @@ inline Experiment_outcome run_case(const Experiment_case& c)
   else
   {
     if(c.start == "placing")
-      ES::insert_by_placing(tr, c.points, ES::INPUT_ORDER);
+      ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER));
     else if(c.start.rfind("scramble:", 0) == 0)
     {
       ES::insert_delaunay(tr, c.points);
@@ -221,7 +221,7 @@ inline Experiment_case case_from_json(const nlohmann::json& j, const std::string
   if(c.strategy != "plain" && c.strategy != "helper" && c.strategy != "insertion")
     fail("unknown strategy '" + c.strategy + "' (plain, helper, insertion)");
   if(c.order != "storage" && c.order != "random") fail("unknown order '" + c.order + "' (storage, random)");
-  const std::string problem = ES::point_set_problem(c.points, K());
+  const std::string problem = ES::point_set_problem(c.points);
   if(!problem.empty()) fail(problem);
   if(c.start.rfind("scramble:", 0) == 0)
     whole_number(c.start.substr(9), name + ": bad case file: start scramble:K");

@@ -94,7 +94,7 @@ inline std::vector<Point> read_point_file(const std::string& path)
 {
   std::vector<Point> points;
   for(const auto& p : CGAL::Edge_swapping_3::IO::read_node_file(path).points) points.emplace_back(p[0], p[1], p[2]);
-  const std::string problem = ES::point_set_problem(points, K());
+  const std::string problem = ES::point_set_problem(points);
   if(!problem.empty()) throw Usage_error(path + ": " + problem);
   return points;
 }
@@ -182,7 +182,7 @@ inline int run_experiment(const Experiment_options& opt)
         const auto points = family_points(f, size, first_seed, files);
         if(topcom && points.size() > topcom_max_points)
           throw Usage_error("--starts topcom takes at most 20 points; family " + f + " has " + std::to_string(points.size()));
-        const std::string problem = ES::point_set_problem(points, K());
+        const std::string problem = ES::point_set_problem(points);
         if(!problem.empty())
           throw Usage_error("family " + f + " with " + std::to_string(size) + " points (seed " + std::to_string(first_seed) +
                             "): " + problem);

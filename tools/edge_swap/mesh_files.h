@@ -150,7 +150,7 @@ inline Input read_input(const std::string& path)
 /// Throws IO::Input_error unless the points can be triangulated in 3-D.
 inline void require_valid_point_set(const Input& in, const std::string& path)
 {
-  const std::string problem = ES::point_set_problem(in.points, K());
+  const std::string problem = ES::point_set_problem(in.points);
   if(!problem.empty()) throw IO::Input_error(path + ": " + problem);
 }
 

@@ -35,7 +35,7 @@ inline void build_start(Triangulation& tr, const Input& in, const std::string& s
 {
   std::vector<Triangulation::Vertex_handle> vertices;
   if(start == "placing" || start == "placing:input")
-    vertices = ES::insert_by_placing(tr, in.points, start == "placing" ? ES::SPATIAL_ORDER : ES::INPUT_ORDER);
+    vertices = ES::insert_by_placing(tr, in.points, ES::parameters::insertion_order(start == "placing" ? ES::SPATIAL_ORDER : ES::INPUT_ORDER));
   else if(start == "delaunay" || start.rfind("scramble:", 0) == 0)
     vertices = ES::insert_delaunay(tr, in.points);
   else

@@ -42,7 +42,7 @@ inline int run_shrink(const Shrink_options& opt)
   const std::string expect = !opt.expect.empty() ? opt.expect : (c.strategy == "plain" ? "stuck" : "failure");
   if(expect != "stuck" && expect != "failure") throw Usage_error("--expect is stuck or failure");
   auto fails = [&](const Experiment_case& k) {
-    if(!ES::point_set_problem(k.points, K()).empty()) return false;
+    if(!ES::point_set_problem(k.points).empty()) return false;
     const auto o = run_case(k);
     return expect == "stuck" ? o.ending == "stuck" : !o.equal_to_cgal;
   };

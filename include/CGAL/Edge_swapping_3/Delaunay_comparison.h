@@ -68,7 +68,7 @@ Delaunay_comparison compare_with_delaunay(const Tr& tr)
   std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(diff));
   r.delaunay_cells_missing = diff.size();
   r.identical = r.cells_not_in_delaunay == 0 && r.delaunay_cells_missing == 0;
-  r.non_delaunay_facets = number_of_non_delaunay_facets(tr, CGAL_PERTURBATION);
+  r.non_delaunay_facets = internal::number_of_non_delaunay_facets(tr, CGAL_PERTURBATION);
   return r;
 }
 

@@ -5,7 +5,9 @@
 #define CGAL_EDGE_SWAPPING_3_DELAUNAY_CRITERION_H
 
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/perturbed_predicates.h>
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
@@ -21,13 +23,11 @@ enum Perturbation
   NO_PERTURBATION    ///< a point on the sphere does not violate it: any of the tied triangulations
 };
 
-/// Whether facet `(c, i)` is locally Delaunay: the vertex across it is not in
-/// conflict with `c` under the test CGAL's Delaunay insertion uses (sphere of
-/// a finite cell; for a cell outside a hull facet, the points beyond the facet
-/// and the coplanar ones inside its circle). Facets on the hull always pass.
+namespace internal {
+
+// `is_locally_delaunay` with its tie-breaking spelled out.
 template <class Tr>
-bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i,
-                         Perturbation perturbation = CGAL_PERTURBATION)
+bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i, Perturbation perturbation)
 {
   const bool perturb = (perturbation == CGAL_PERTURBATION);
   const auto n = c->neighbor(i);
@@ -37,10 +37,9 @@ bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i,
   return internal::side_of_sphere(tr, c, internal::bare_point(m->point()), perturb) != ON_BOUNDED_SIDE;
 }
 
-/// The number of facets (finite or not) of `tr` that are not locally Delaunay.
+// `number_of_non_delaunay_facets` with its tie-breaking spelled out.
 template <class Tr>
-std::size_t number_of_non_delaunay_facets(const Tr& tr,
-                                          Perturbation perturbation = CGAL_PERTURBATION)
+std::size_t number_of_non_delaunay_facets(const Tr& tr, Perturbation perturbation)
 {
   std::size_t n = 0;
   // Each facet once, from its cell of smaller address, as CGAL's facet
@@ -51,6 +50,34 @@ std::size_t number_of_non_delaunay_facets(const Tr& tr,
         ++n;
   });
   return n;
+}
+
+} // namespace internal
+
+/// Whether facet `(c, i)` is locally Delaunay: the vertex across it is not in
+/// conflict with `c` under the test CGAL's Delaunay insertion uses (sphere of
+/// a finite cell; for a cell outside a hull facet, the points beyond the facet
+/// and the coplanar ones inside its circle). Facets on the hull always pass.
+/// Named parameter: `perturbation` (default `CGAL_PERTURBATION`).
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return internal::is_locally_delaunay(tr, c, i,
+                                       choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION));
+}
+
+/// The number of facets (finite or not) of `tr` that are not locally Delaunay.
+/// Named parameter: `perturbation` (default `CGAL_PERTURBATION`).
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::size_t number_of_non_delaunay_facets(const Tr& tr, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  return internal::number_of_non_delaunay_facets(
+      tr, choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION));
 }
 
 /// \ingroup PkgEdgeSwapping3Criteria
@@ -70,7 +97,7 @@ struct Delaunay_criterion
   template <class Tr>
   bool operator()(const Tr& tr, const Five_point_configuration<Tr>& conf) const
   {
-    return !is_locally_delaunay(tr, conf.cell(), conf.index(), CGAL_PERTURBATION);
+    return !internal::is_locally_delaunay(tr, conf.cell(), conf.index(), CGAL_PERTURBATION);
   }
 };
 

@@ -11,6 +11,8 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <CGAL/Edge_swapping_3/Regular_criterion.h>
+#include <CGAL/Edge_swapping_3/internal/split_with_data.h>
 #include <algorithm>
 
 namespace CGAL {
@@ -27,13 +29,14 @@ std::vector<std::size_t> basis_first(const std::vector<Point>& points, const Gt&
   std::size_t basis[4], found = 0;
   for(std::size_t k = 0; k < seq.size() && found < 4; ++k)
   {
-    const auto& q = points[seq[k]];
+    // Weighted points are placed by their bare points.
+    auto at = [&](std::size_t m) -> decltype(auto) { return bare_point(points[seq[m]]); };
+    const auto& q = at(k);
     bool independent = true;
-    if(found >= 1) independent = (q != points[seq[basis[0]]]);
-    if(found >= 2 && independent) independent = !gt.collinear_3_object()(points[seq[basis[0]]], points[seq[basis[1]]], q);
+    if(found >= 1) independent = (q != at(basis[0]));
+    if(found >= 2 && independent) independent = !gt.collinear_3_object()(at(basis[0]), at(basis[1]), q);
     if(found == 3 && independent)
-      independent = gt.orientation_3_object()(points[seq[basis[0]]], points[seq[basis[1]]],
-                                              points[seq[basis[2]]], q) != COPLANAR;
+      independent = gt.orientation_3_object()(at(basis[0]), at(basis[1]), at(basis[2]), q) != COPLANAR;
     if(independent) basis[found++] = k;
   }
   for(std::size_t m = 0; m < found; ++m)
@@ -116,6 +119,76 @@ Insertion_report<Tr> delaunay_by_insertion(Tr& tr, const std::vector<typename Tr
       report.stuck_facets += r.stuck_facets;
     }
   }
+  report.seconds = timer.time();
+  return report;
+}
+
+/// \ingroup PkgEdgeSwapping3Functions
+/// \brief Makes the empty `tr` the regular triangulation of the weighted
+/// `points` by inserting them one at a time with `insert_by_swapping()` and
+/// `Regular_criterion` (Edelsbrunner and Shah's flips: 2-3, 3-2, the coplanar
+/// ones, and 4-1 for a vertex made redundant).
+///
+/// The result is meant to equal CGAL's `Regular_triangulation_3` of the points,
+/// cell for cell, redundant points left out. The first four affinely
+/// independent points (in the insertion order) start the triangulation.
+///
+/// \tparam Tr a `CGAL::Regular_triangulation_3`
+/// \tparam NamedParameters a sequence of named parameters (`CGAL::Named_function_parameters`)
+/// \param tr an empty triangulation
+/// \param points the weighted points
+/// \param np `insertion_order` (default `SPATIAL_ORDER`) and `perturbation`, as for `delaunay_by_insertion()`
+/// \pre `tr.number_of_vertices() == 0`
+/// \return the vertex of each point (the default handle for a redundant one, or for one a later point
+///   made redundant), the swaps, the stuck facets (0 when the result is regular) and the time
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Insertion_report<Tr> regular_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
+                                          const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Geom_traits::Point_3 Bare_point;
+  typedef typename internal::Plain_triangulation_of<Tr>::type Base;
+  CGAL_precondition(tr.number_of_vertices() == 0);
+  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
+  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
+  CGAL::Real_timer timer;
+  timer.start();
+  std::vector<Bare_point> bare;
+  bare.reserve(points.size());
+  for(const auto& p : points) bare.push_back(internal::bare_point(p));
+  const std::vector<std::size_t> seq = internal::basis_first(
+      points, tr.geom_traits(), internal::insertion_sequence<typename Tr::Geom_traits>(bare, order));
+
+  Insertion_report<Tr> report;
+  report.vertices.resize(points.size());
+  typename Tr::Cell_handle hint;
+  std::size_t removed = 0;
+  for(std::size_t k : seq)
+  {
+    if(tr.dimension() < 3)
+    {
+      // The first four affinely independent points: one tetrahedron, regular.
+      report.vertices[k] = static_cast<Base&>(tr).insert(points[k], hint);
+      hint = report.vertices[k]->cell();
+      continue;
+    }
+    const auto r = internal::insert_by_swapping(tr, points[k], Regular_criterion(), hint, No_constraints(),
+                                                perturbation, 0);
+    report.vertices[k] = r.vertex;
+    if(r.vertex != Vertex_handle()) hint = r.vertex->cell();
+    for(int f = 0; f < number_of_flip_kinds; ++f) report.swaps[f] += r.swaps[f];
+    report.stuck_facets += r.stuck_facets;
+    removed += r.removed_vertices;
+  }
+  if(removed > 0)
+    // A vertex removed later is dead, or its slot holds another point now.
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      Vertex_handle& v = report.vertices[k];
+      if(v != Vertex_handle() && (!tr.tds().vertices().is_used(v) || !(v->point() == points[k]))) v = Vertex_handle();
+    }
   report.seconds = timer.time();
   return report;
 }

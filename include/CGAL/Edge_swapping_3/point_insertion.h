@@ -13,6 +13,9 @@
 #define CGAL_EDGE_SWAPPING_3_POINT_INSERTION_H
 
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Regular_criterion.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
+#include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
@@ -41,6 +44,10 @@ struct Insertion_result
   std::size_t stuck_facets = 0;
   /// Other criteria: the swap limit was reached (the front did not settle).
   bool swap_limit_reached = false;
+  /// Regular criterion: the point is redundant (hidden, as in `Regular_triangulation_3`); nothing changed.
+  bool hidden = false;
+  /// Regular criterion: the vertices the point made redundant, removed by 4-1 flips.
+  std::size_t removed_vertices = 0;
 
   /// The swaps of every kind.
   std::size_t total_swaps() const { return swaps[0] + swaps[1] + swaps[2] + swaps[3]; }
@@ -258,6 +265,208 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
   }
 }
 
+// The removal of a vertex u of the link facet (c, i) of v that the new
+// weights made redundant: Edelsbrunner and Shah's 4-1 flip when u lies inside
+// the tetrahedron of v, the facet's other vertices and the apex across, and
+// its degenerate forms when u lies on a facet or an edge of it (on the
+// segment from v to the apex, say): the cells around u are replaced by the
+// cone from v over the facets of their union that v is not on, when every
+// cone cell is positively oriented and u conflicts with none that holds it.
+template <class Tr>
+bool plan_vertex_removal(const Tr& tr, typename Tr::Cell_handle c, int i, Perturbation perturbation,
+                         typename Tr::Vertex_handle& u, std::vector<typename Tr::Cell_handle>& old_cells,
+                         std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  const Cell_handle n = c->neighbor(i);
+  if(tr.is_infinite(c) || tr.is_infinite(n)) return false;
+  const Vertex_handle v = c->vertex(i);
+  auto orientation = [&](const std::array<Vertex_handle, 4>& t) {
+    return tr.geom_traits().orientation_3_object()(bare_point(t[0]->point()), bare_point(t[1]->point()),
+                                                   bare_point(t[2]->point()), bare_point(t[3]->point()));
+  };
+  for(int k = 0; k < 4; ++k)
+  {
+    if(k == i) continue;
+    const Vertex_handle candidate = c->vertex(k);
+    // The cells around the candidate, by their facets through it (no TDS
+    // mark: the link queue keeps its state there).
+    old_cells.assign(1, c);
+    bool usable = true;
+    for(std::size_t head = 0; head < old_cells.size() && usable; ++head)
+    {
+      const Cell_handle d = old_cells[head];
+      const int j = d->index(candidate);
+      for(int f = 0; f < 4 && usable; ++f)
+      {
+        if(f == j) continue;
+        const Cell_handle m = d->neighbor(f);
+        if(old_cells.size() > 64) usable = false;
+        else if(std::find(old_cells.begin(), old_cells.end(), m) == old_cells.end()) old_cells.push_back(m);
+      }
+    }
+    if(!usable) continue;
+    new_cells.clear();
+    bool valid = true;
+    for(Cell_handle d : old_cells)
+    {
+      if(d->has_vertex(v)) continue;
+      std::array<Vertex_handle, 4> t;
+      for(int m = 0; m < 4; ++m) t[m] = (d->vertex(m) == candidate) ? v : d->vertex(m);
+      if(!tr.is_infinite(d))
+        valid = orientation(t) == POSITIVE;
+      else
+      {
+        // A hull cell: v must take the candidate's place in the hull's plane,
+        // on the same side of the facet's other edge.
+        const int inf = d->index(tr.infinite_vertex());
+        std::array<Vertex_handle, 2> xy;
+        int found = 0;
+        for(int m = 0; m < 4; ++m)
+          if(m != inf && d->vertex(m) != candidate) xy[found++] = d->vertex(m);
+        const auto& gt = tr.geom_traits();
+        const auto& x = bare_point(xy[0]->point());
+        const auto& y = bare_point(xy[1]->point());
+        const auto& a = bare_point(candidate->point());
+        const auto& b = bare_point(v->point());
+        valid = gt.orientation_3_object()(x, y, a, b) == COPLANAR &&
+                gt.coplanar_orientation_3_object()(x, y, a) != COLLINEAR &&
+                gt.coplanar_orientation_3_object()(x, y, a) == gt.coplanar_orientation_3_object()(x, y, b);
+      }
+      if(!valid) break;
+      new_cells.push_back(t);
+    }
+    if(!valid || new_cells.empty()) continue;
+    // Redundant: not in conflict with a cone cell whose closure holds it.
+    const auto& q = candidate->point();
+    for(const auto& t : new_cells)
+    {
+      if(tr.is_infinite(t[0]) || tr.is_infinite(t[1]) || tr.is_infinite(t[2]) || tr.is_infinite(t[3])) continue;
+      bool holds = true;
+      for(int m = 0; m < 4 && holds; ++m)
+      {
+        auto s = t;
+        s[m] = candidate;
+        holds = orientation(s) != NEGATIVE;
+      }
+      if(holds && side_of_oriented_power_sphere(tr.geom_traits(), t[0]->point(), t[1]->point(), t[2]->point(),
+                                                t[3]->point(), q, perturbation == CGAL_PERTURBATION) ==
+                      ON_POSITIVE_SIDE)
+      {
+        valid = false;
+        break;
+      }
+    }
+    if(!valid) continue;
+    u = candidate;
+    return true;
+  }
+  return false;
+}
+
+// Flips outward from v, a new vertex or one whose weight grew, until its link
+// is locally regular: 2-3, 3-2 and the coplanar flips as for Delaunay, and
+// the removal of a vertex made redundant (4-1, or its degenerate forms).
+template <class Tr, class Constraints>
+void flip_link_to_regular(Tr& tr, typename Tr::Vertex_handle v, Perturbation perturbation,
+                          const Constraints& constraints, Insertion_result<Tr>& result)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  Link_queue<Tr> queue, unflipped, star;
+  tr.incident_cells(v, std::back_inserter(star));
+  for(Cell_handle c : star) push_link_cell<Tr>(queue, c);
+
+  Flip_plan<Tr> plan;
+  std::array<Cell_handle, 4> created;
+  std::vector<Cell_handle> old_cells;
+  std::vector<std::array<typename Tr::Vertex_handle, 4>> new_cells;
+  Default_replacement_visitor no_visitor;
+  for(bool progress = true; progress;)
+  {
+    progress = false;
+    for(std::size_t head = 0; head < queue.size(); ++head)
+    {
+      const Cell_handle c = queue[head];
+      const int i = pop_link_cell(tr, c, v);
+      if(i < 0) continue;
+      if(is_locally_regular(tr, c, i, perturbation)) continue;
+      typename Tr::Vertex_handle u;
+      if(plan_link_flip(tr, c, i, plan) && flip_respects_constraints(tr, plan, constraints))
+      {
+        const int n = execute_flip(tr, plan, created, constraints);
+        ++result.swaps[plan.kind];
+        for(int k = 0; k < n; ++k)
+          if(created[k]->has_vertex(v)) push_link_cell<Tr>(queue, created[k]);
+      }
+      else if(std::is_same<Constraints, No_constraints>::value &&
+              plan_vertex_removal(tr, c, i, perturbation, u, old_cells, new_cells))
+      {
+        for(Cell_handle d : replace_cells(tr, old_cells, new_cells, constraints, no_visitor))
+          push_link_cell<Tr>(queue, d);
+        tr.tds().delete_vertex(u);
+        ++result.removed_vertices;
+      }
+      else
+      {
+        set_link_cell_aside<Tr>(unflipped, c);
+        continue;
+      }
+      progress = true;
+    }
+    queue.clear();
+    if(!progress) break;
+    for(Cell_handle c : unflipped)
+      if(is_set_aside(tr, c)) push_link_cell<Tr>(queue, c);
+    unflipped.clear();
+  }
+  for(Cell_handle c : unflipped)
+  {
+    if(!is_set_aside(tr, c)) continue;
+    c->tds_data().clear();
+    int i;
+    if(c->has_vertex(v, i) && !is_locally_regular(tr, c, i, perturbation)) ++result.stuck_facets;
+  }
+}
+
+// Flip insertion of a weighted point, as Regular_triangulation_3 inserts it:
+// a point with the weight of the vertex at its place changes nothing; a
+// point not in conflict with the cell it falls in is redundant (hidden); a
+// heavier point at a vertex's place replaces its point.
+template <class Tr, class Constraints>
+Insertion_result<Tr> insert_weighted(Tr& tr, const typename Tr::Point& p, typename Tr::Cell_handle hint,
+                                     const Constraints& constraints, Perturbation perturbation)
+{
+  Insertion_result<Tr> result;
+  const bool perturb = (perturbation == CGAL_PERTURBATION);
+  int li, lj;
+  const auto c = tr.locate(p, result.location, li, lj, hint);
+  if(result.location == Tr::VERTEX && c->vertex(li)->point().weight() == p.weight())
+  {
+    result.vertex = c->vertex(li);
+    return result;
+  }
+  if(side_of_power_sphere(tr, c, p, perturb) != ON_BOUNDED_SIDE)
+  {
+    result.hidden = true;
+    return result;
+  }
+  if(result.location == Tr::VERTEX)
+  {
+    if(!std::is_same<Constraints, No_constraints>::value) return result;
+    result.vertex = c->vertex(li);
+    result.vertex->set_point(p); // the lighter point it had is hidden now
+  }
+  else
+  {
+    if(!split_is_allowed(tr, c, result.location, li, lj, constraints)) return result;
+    result.vertex = split_with_data(tr, p, c, result.location, li, lj, constraints);
+    result.is_new = true;
+  }
+  flip_link_to_regular(tr, result.vertex, perturbation, constraints, result);
+  return result;
+}
+
 // Swaps from the new vertex v under any criterion, with back-propagation:
 // after a flip, every facet of the new cells is tested again.
 template <class Tr, class Criterion, class Constraints>
@@ -312,24 +521,29 @@ Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, con
                                         Perturbation perturbation, std::size_t max_swaps)
 {
   CGAL_precondition(tr.dimension() == 3);
-  Insertion_result<Tr> result;
-  int li, lj;
-  // CGAL's walk: exact orientation tests, remembering and stochastic.
-  const auto c = tr.locate(p, result.location, li, lj, hint);
-  if(result.location == Tr::VERTEX)
+  if constexpr(Is_regular_criterion<Criterion>::value)
+    return insert_weighted(tr, p, hint, constraints, perturbation);
+  else
   {
-    result.vertex = c->vertex(li);
+    Insertion_result<Tr> result;
+    int li, lj;
+    // CGAL's walk: exact orientation tests, remembering and stochastic.
+    const auto c = tr.locate(p, result.location, li, lj, hint);
+    if(result.location == Tr::VERTEX)
+    {
+      result.vertex = c->vertex(li);
+      return result;
+    }
+    if(!split_is_allowed(tr, c, result.location, li, lj, constraints))
+      return result;
+    result.vertex = split_with_data(tr, p, c, result.location, li, lj, constraints);
+    result.is_new = true;
+    if constexpr(Is_delaunay_criterion<Criterion>::value)
+      flip_link_to_delaunay(tr, result.vertex, perturbation, constraints, result);
+    else
+      swap_around(tr, result.vertex, criterion, constraints, max_swaps, result);
     return result;
   }
-  if(!split_is_allowed(tr, c, result.location, li, lj, constraints))
-    return result;
-  result.vertex = split_with_data(tr, p, c, result.location, li, lj, constraints);
-  result.is_new = true;
-  if constexpr(Is_delaunay_criterion<Criterion>::value)
-    flip_link_to_delaunay(tr, result.vertex, perturbation, constraints, result);
-  else
-    swap_around(tr, result.vertex, criterion, constraints, max_swaps, result);
-  return result;
 }
 
 } // namespace internal
@@ -342,7 +556,12 @@ Insertion_result<Tr> insert_by_swapping(Tr& tr, const typename Tr::Point& p, con
 /// Delaunay triangulation gives the Delaunay triangulation of the points with
 /// `p` (with `CGAL_PERTURBATION`: CGAL's own, cell for cell); only the link of
 /// the new vertex is tested. Other criteria test every facet of a changed
-/// cell again and stop after `maximum_swaps` swaps. In a domain mesh a point
+/// cell again and stop after `maximum_swaps` swaps. With `Regular_criterion`
+/// on a `Regular_triangulation_3` (weighted points), inserting into a regular
+/// triangulation gives the regular triangulation with `p`, CGAL's cell for
+/// cell: a redundant `p` is hidden (`result.hidden`), and the vertices that
+/// `p` makes redundant are removed by 4-1 flips (`result.removed_vertices`).
+/// In a domain mesh a point
 /// outside the domain, or on a constrained facet or on an edge of one, is
 /// refused and `tr` is left unchanged.
 ///

@@ -6,6 +6,8 @@
 #ifndef CGAL_EDGE_SWAPPING_3_POINT_SET_CHECKS_H
 #define CGAL_EDGE_SWAPPING_3_POINT_SET_CHECKS_H
 
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 #include <algorithm>
@@ -44,10 +46,16 @@ inline std::string coordinate_problem(double x)
 }
 
 /// An empty string if `points` (coordinates in the supported range) span 3-D space with no
-/// point repeated; otherwise what is wrong, with 0-based point numbers.
-template <class Gt>
-std::string point_set_problem(const std::vector<typename Gt::Point_3>& points, const Gt& gt = Gt())
+/// point repeated; otherwise what is wrong, with 0-based point numbers. Named parameter:
+/// `geom_traits` (CGAL's; default: the kernel of the points).
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::string point_set_problem(const std::vector<Point>& points,
+                              const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
+  const auto gt = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Kernel());
   const std::size_t n = points.size();
   for(std::size_t k = 0; k < n; ++k)
     for(int c = 0; c < 3; ++c)

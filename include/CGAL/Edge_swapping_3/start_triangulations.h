@@ -5,6 +5,8 @@
 #ifndef CGAL_EDGE_SWAPPING_3_START_TRIANGULATIONS_H
 #define CGAL_EDGE_SWAPPING_3_START_TRIANGULATIONS_H
 
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Random.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -46,11 +48,15 @@ std::vector<std::size_t> insertion_sequence(const std::vector<typename Gt::Point
 /// splits the cell it falls in, or is joined to the hull facets it sees; no
 /// flip at all, so the result is an arbitrary (usually poor) triangulation.
 /// Returns the vertex of each point (equal points share one vertex).
-template <class Tr>
+/// Named parameter: `insertion_order` (default `SPATIAL_ORDER`).
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<typename Tr::Vertex_handle>
 insert_by_placing(Tr& tr, const std::vector<typename Tr::Point>& points,
-                  Insertion_order order = SPATIAL_ORDER)
+                  const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
   std::vector<typename Tr::Vertex_handle> vertices(points.size());
   typename Tr::Vertex_handle hint;
   for(std::size_t k : internal::insertion_sequence<typename Tr::Geom_traits>(points, order))

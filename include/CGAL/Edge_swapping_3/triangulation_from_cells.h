@@ -82,7 +82,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   auto orientation = tr.geom_traits().orientation_3_object();
   auto cell_name = [](std::size_t k) { return "tetrahedron " + std::to_string(k); };
 
-  std::string problem = point_set_problem(points, tr.geom_traits());
+  std::string problem = point_set_problem(points, CGAL::parameters::geom_traits(tr.geom_traits()));
   if(!problem.empty()) return problem;
   if(cells.empty()) return "no tetrahedra";
   // The table of open facets packs indices and places in 32 bits.

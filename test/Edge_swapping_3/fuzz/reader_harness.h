@@ -28,7 +28,7 @@ inline void build_mesh(const std::string& name, const edge_swap::Input& in, Outc
 {
   edge_swap::Triangulation tr;
   const std::string problem = in.is_mesh ? edge_swap::build_mesh(tr, in)
-                                         : CGAL::Edge_swapping_3::point_set_problem(in.points, edge_swap::K());
+                                         : CGAL::Edge_swapping_3::point_set_problem(in.points);
   if(in.is_mesh)
   {
     // Large meshes are built in the Hilbert order of their points: that

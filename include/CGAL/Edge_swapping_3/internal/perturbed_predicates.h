@@ -125,6 +125,103 @@ Bounded_side side_of_sphere(const Tr& tr, typename Tr::Cell_handle c,
   return coplanar_side_of_bounded_circle(gt, q0, q1, q2, p, perturb);
 }
 
+
+// The power tests of a regular triangulation (weighted points), perturbed as
+// Regular_triangulation_3 perturbs them: the same lexicographic ranks, more
+// monomials (the weights can make more determinants vanish).
+template <class Gt, class Weighted_point>
+Oriented_side side_of_oriented_power_sphere(const Gt& gt,
+                                            const Weighted_point& p0, const Weighted_point& p1,
+                                            const Weighted_point& p2, const Weighted_point& p3,
+                                            const Weighted_point& p, bool perturb)
+{
+  const Oriented_side os = gt.power_side_of_oriented_power_sphere_3_object()(p0, p1, p2, p3, p);
+  if(os != ON_ORIENTED_BOUNDARY || !perturb)
+    return os;
+
+  const Weighted_point* points[5] = {&p0, &p1, &p2, &p3, &p};
+  std::sort(points, points + 5, [&](const Weighted_point* a, const Weighted_point* b) {
+    return gt.compare_xyz_3_object()(bare_point(*a), bare_point(*b)) == SMALLER;
+  });
+  auto orientation = [&](const Weighted_point& a, const Weighted_point& b, const Weighted_point& c,
+                         const Weighted_point& d) {
+    return gt.orientation_3_object()(bare_point(a), bare_point(b), bare_point(c), bare_point(d));
+  };
+  for(int i = 4; i > 1; --i)
+  {
+    if(points[i] == &p)
+      return ON_NEGATIVE_SIDE; // p0..p3 is positively oriented
+    Orientation o = COPLANAR;
+    if(points[i] == &p3) o = orientation(p0, p1, p2, p);
+    else if(points[i] == &p2) o = orientation(p0, p1, p, p3);
+    else if(points[i] == &p1) o = orientation(p0, p, p2, p3);
+    else o = orientation(p, p1, p2, p3);
+    if(o != COPLANAR)
+      return Oriented_side(o);
+  }
+  CGAL_assertion(false);
+  return ON_NEGATIVE_SIDE;
+}
+
+// The coplanar power test of p against the positively oriented (in their
+// plane) p0, p1, p2, perturbed as Regular_triangulation_3 does.
+template <class Gt, class Weighted_point>
+Oriented_side side_of_oriented_power_circle(const Gt& gt,
+                                            const Weighted_point& p0, const Weighted_point& p1,
+                                            const Weighted_point& p2, const Weighted_point& p, bool perturb)
+{
+  const Oriented_side os = gt.power_side_of_oriented_power_sphere_3_object()(p0, p1, p2, p);
+  if(os != ON_ORIENTED_BOUNDARY || !perturb)
+    return os;
+
+  const Weighted_point* points[4] = {&p0, &p1, &p2, &p};
+  std::sort(points, points + 4, [&](const Weighted_point* a, const Weighted_point* b) {
+    return gt.compare_xyz_3_object()(bare_point(*a), bare_point(*b)) == SMALLER;
+  });
+  auto coplanar_orientation = [&](const Weighted_point& a, const Weighted_point& b, const Weighted_point& c) {
+    return gt.coplanar_orientation_3_object()(bare_point(a), bare_point(b), bare_point(c));
+  };
+  for(int i = 3; i > 1; --i)
+  {
+    if(points[i] == &p)
+      return ON_NEGATIVE_SIDE;
+    Orientation o = COLLINEAR;
+    if(points[i] == &p2) o = coplanar_orientation(p0, p1, p);
+    else if(points[i] == &p1) o = coplanar_orientation(p0, p, p2);
+    else o = coplanar_orientation(p, p1, p2);
+    if(o != COLLINEAR)
+      return Oriented_side(o);
+  }
+  CGAL_assertion(false);
+  return ON_NEGATIVE_SIDE;
+}
+
+// Whether the weighted point `p` conflicts with cell `c` of `tr`, as
+// Regular_triangulation_3 decides it (`in_conflict_3`).
+template <class Tr>
+Bounded_side side_of_power_sphere(const Tr& tr, typename Tr::Cell_handle c, const typename Tr::Point& p,
+                                  bool perturb)
+{
+  const auto& gt = tr.geom_traits();
+  int i3 = -1;
+  if(!c->has_vertex(tr.infinite_vertex(), i3))
+    return Bounded_side(side_of_oriented_power_sphere(gt, c->vertex(0)->point(), c->vertex(1)->point(),
+                                                      c->vertex(2)->point(), c->vertex(3)->point(), p, perturb));
+  const int i0 = (i3 % 2 == 1) ? (i3 + 1) & 3 : (i3 + 2) & 3;
+  const int i1 = (i3 % 2 == 1) ? (i3 + 2) & 3 : (i3 + 1) & 3;
+  const int i2 = (i3 + 3) & 3;
+  const auto& q0 = c->vertex(i0)->point();
+  const auto& q1 = c->vertex(i1)->point();
+  const auto& q2 = c->vertex(i2)->point();
+  const Orientation o = gt.orientation_3_object()(bare_point(q0), bare_point(q1), bare_point(q2), bare_point(p));
+  if(o != ZERO)
+    return Bounded_side(o);
+  // Coplanar with the hull facet: the power circle, oriented in its plane.
+  if(gt.coplanar_orientation_3_object()(bare_point(q0), bare_point(q1), bare_point(q2)) == POSITIVE)
+    return Bounded_side(side_of_oriented_power_circle(gt, q0, q1, q2, p, perturb));
+  return Bounded_side(side_of_oriented_power_circle(gt, q0, q2, q1, p, perturb));
+}
+
 } // namespace internal
 } // namespace Edge_swapping_3
 } // namespace CGAL

@@ -8,6 +8,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_SPLIT_WITH_DATA_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_SPLIT_WITH_DATA_H
 
+#include <CGAL/Triangulation_3.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <algorithm>
 #include <array>
@@ -72,13 +73,29 @@ std::array<Vertex_handle, 3> sorted_facet(Vertex_handle a, Vertex_handle b, Vert
 
 // Splits and carries the data over. With `No_constraints` this is exactly
 // Triangulation_3::insert.
+// The Triangulation_3 a triangulation class derives from: Delaunay_ and
+// Regular_triangulation_3 name it Tr_Base.
+template <class Tr, class = void>
+struct Plain_triangulation_of { typedef Tr type; };
+template <class Tr>
+struct Plain_triangulation_of<Tr, std::void_t<typename Tr::Tr_Base>> { typedef typename Tr::Tr_Base type; };
+
+// The split of Triangulation_3 itself: Delaunay_triangulation_3 and
+// Regular_triangulation_3 hide it behind their own insertion.
+template <class Tr>
+typename Tr::Vertex_handle plain_split(Tr& tr, const typename Tr::Point& p, typename Tr::Cell_handle c,
+                                       typename Tr::Locate_type lt, int li, int lj)
+{
+  return static_cast<typename Plain_triangulation_of<Tr>::type&>(tr).insert(p, lt, c, li, lj);
+}
+
 template <class Tr, class Constraints>
 typename Tr::Vertex_handle split_with_data(Tr& tr, const typename Tr::Point& p, typename Tr::Cell_handle c,
                                            typename Tr::Locate_type lt, int li, int lj,
                                            const Constraints& constraints)
 {
   if constexpr(std::is_same<Constraints, No_constraints>::value)
-    return tr.insert(p, lt, c, li, lj);
+    return plain_split(tr, p, c, lt, li, lj);
   else
   {
     typedef typename Tr::Vertex_handle Vertex_handle;
@@ -99,7 +116,7 @@ typename Tr::Vertex_handle split_with_data(Tr& tr, const typename Tr::Point& p, 
                            constraints.cell_data(d), constraints.facet_data(d, i)});
     const auto default_cell = constraints.cell_data(c);
 
-    const Vertex_handle v = tr.insert(p, lt, c, li, lj);
+    const Vertex_handle v = plain_split(tr, p, c, lt, li, lj);
     std::vector<typename Tr::Cell_handle> star;
     tr.incident_cells(v, std::back_inserter(star));
     for(const auto& d : star)
