@@ -283,7 +283,8 @@ TEST_CASE("A triangulation that Tetrahedral_remeshing processed: swaps, worst fi
   require_kept();
 }
 
-TEST_CASE("Mesh_3's output as it is: swaps and the worst-first optimizer keep its complex and subdomains",
+TEST_CASE("Mesh_3's output as it is: swaps, the worst-first optimizer, insertion and refinement keep its complex "
+          "and subdomains",
           "[domain][cgal vocabulary]")
 {
   // Deterministic: Mesh_3 without perturbation or exudation, seeded by CGAL's default random.
@@ -311,6 +312,22 @@ TEST_CASE("Mesh_3's output as it is: swaps and the worst-first optimizer keep it
                                                   ES::parameters::operations(unsigned(ES::ALL_OPERATIONS)));
   REQUIRE(worst.worst_after > worst.worst_before);
   REQUIRE(worst.smoothing_moves > 0);
+  require_kept();
+
+  // Insertion of weighted points (weight 0) and refinement at circumcenters,
+  // under MinMax: new cells take the subdomain of the cells they split.
+  CGAL::Random rng(5);
+  std::size_t inserted = 0;
+  for(int k = 0; k < 50; ++k)
+  {
+    const Point p(rng.get_double(-0.7, 0.7), rng.get_double(-0.7, 0.7), rng.get_double(-0.7, 0.7));
+    inserted += ES::insert_by_swapping(tr, Mesh_tr::Point(p), ES::Min_max_dihedral_angle_criterion()).is_new;
+  }
+  REQUIRE(inserted > 40);
+  require_kept();
+  const auto refined = ES::refine_by_aspect_ratio(tr, 2.0, ES::Min_max_dihedral_angle_criterion(),
+                                                  ES::parameters::maximum_sites(200));
+  REQUIRE(refined.sites_inserted > 0);
   require_kept();
 }
 

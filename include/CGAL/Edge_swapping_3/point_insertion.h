@@ -101,6 +101,37 @@ bool is_set_aside(const Tr& tr, typename Tr::Cell_handle c)
   return tr.tds().cells().is_used(c) && c->tds_data().is_on_boundary();
 }
 
+// The end of a pass over the link queue: when flips were made, the facets
+// set aside go back into the queue for another pass (true); else the
+// flipping is over (false).
+template <class Tr>
+bool retry_set_aside(const Tr& tr, Link_queue<Tr>& queue, Link_queue<Tr>& aside, bool progress)
+{
+  queue.clear();
+  if(!progress) return false;
+  for(auto c : aside)
+    if(is_set_aside(tr, c)) push_link_cell<Tr>(queue, c);
+  aside.clear();
+  return true;
+}
+
+// The link facets of v still set aside that the test `holds(c, i)` fails:
+// left unflipped (Joe's and Edelsbrunner and Shah's theorems say none).
+template <class Tr, class Test>
+std::size_t count_stuck_link_facets(const Tr& tr, typename Tr::Vertex_handle v, const Link_queue<Tr>& aside,
+                                    const Test& holds)
+{
+  std::size_t stuck = 0;
+  for(auto c : aside)
+  {
+    if(!is_set_aside(tr, c)) continue;
+    c->tds_data().clear();
+    int i;
+    if(c->has_vertex(v, i) && !holds(c, i)) ++stuck;
+  }
+  return stuck;
+}
+
 // The flip that makes the link facet (c, i) of v Delaunay, if it can be made
 // now: the flip of the five-point configuration for a finite facet; for the
 // facet between two infinite cells (v and the apex across on a coplanar hull),
@@ -250,19 +281,11 @@ void flip_link_to_delaunay(Tr& tr, typename Tr::Vertex_handle v, Perturbation pe
       for(int k = 0; k < n; ++k)
         if(created[k]->has_vertex(v)) push_link_cell<Tr>(queue, created[k]);
     }
-    queue.clear();
-    if(!progress) break;
-    for(Cell_handle c : unflipped)
-      if(is_set_aside(tr, c)) push_link_cell<Tr>(queue, c);
-    unflipped.clear();
+    if(!retry_set_aside(tr, queue, unflipped, progress)) break;
   }
-  for(Cell_handle c : unflipped)
-  {
-    if(!is_set_aside(tr, c)) continue;
-    c->tds_data().clear();
-    int i;
-    if(c->has_vertex(v, i) && !is_locally_delaunay(tr, c, i, perturbation)) ++result.stuck_facets;
-  }
+  result.stuck_facets += count_stuck_link_facets(tr, v, unflipped, [&](Cell_handle c, int i) {
+    return is_locally_delaunay(tr, c, i, perturbation);
+  });
 }
 
 // The removal of a vertex u of the link facet (c, i) of v that the new
@@ -414,19 +437,11 @@ void flip_link_to_regular(Tr& tr, typename Tr::Vertex_handle v, Perturbation per
       }
       progress = true;
     }
-    queue.clear();
-    if(!progress) break;
-    for(Cell_handle c : unflipped)
-      if(is_set_aside(tr, c)) push_link_cell<Tr>(queue, c);
-    unflipped.clear();
+    if(!retry_set_aside(tr, queue, unflipped, progress)) break;
   }
-  for(Cell_handle c : unflipped)
-  {
-    if(!is_set_aside(tr, c)) continue;
-    c->tds_data().clear();
-    int i;
-    if(c->has_vertex(v, i) && !is_locally_regular(tr, c, i, perturbation)) ++result.stuck_facets;
-  }
+  result.stuck_facets += count_stuck_link_facets(tr, v, unflipped, [&](Cell_handle c, int i) {
+    return is_locally_regular(tr, c, i, perturbation);
+  });
 }
 
 // Flip insertion of a weighted point, as Regular_triangulation_3 inserts it:

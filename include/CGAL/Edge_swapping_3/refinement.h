@@ -17,6 +17,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/point_insertion.h>
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <cmath>
 #include <algorithm>
 #include <functional>
@@ -69,7 +70,7 @@ double gradient_indicator(const Tr& tr, typename Tr::Cell_handle c, const Value&
     for(int j = i + 1; j < 4; ++j)
       largest = (std::max)(largest, std::abs(value(c->vertex(i)) - value(c->vertex(j))));
   const double volume = std::abs(CGAL::to_double(tr.geom_traits().compute_volume_3_object()(
-      c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point())));
+      internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()), internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point()))));
   return largest * std::cbrt(volume);
 }
 
@@ -127,8 +128,8 @@ std::array<double, 4> barycentric_weights(const Tr& tr, typename Tr::Cell_handle
   double total = 0;
   for(int k = 0; k < 4; ++k)
   {
-    std::array<const typename Tr::Point*, 4> q;
-    for(int m = 0; m < 4; ++m) q[m] = (m == k) ? &p : &c->vertex(m)->point();
+    std::array<const typename Tr::Geom_traits::Point_3*, 4> q;
+    for(int m = 0; m < 4; ++m) q[m] = (m == k) ? &bare_point(p) : &bare_point(c->vertex(m)->point());
     w[k] = CGAL::to_double(volume(*q[0], *q[1], *q[2], *q[3]));
     total += w[k];
   }
@@ -161,14 +162,14 @@ bool encroaches_constrained_facet(const Tr& tr, typename Tr::Cell_handle at, con
       {
         if(constraints.is_facet_constrained(d, i))
         {
-          if(diametral_side(d->vertex((i + 1) & 3)->point(), d->vertex((i + 2) & 3)->point(),
-                            d->vertex((i + 3) & 3)->point(), p) == ON_BOUNDED_SIDE)
+          if(diametral_side(bare_point(d->vertex((i + 1) & 3)->point()), bare_point(d->vertex((i + 2) & 3)->point()),
+                            bare_point(d->vertex((i + 3) & 3)->point()), bare_point(p)) == ON_BOUNDED_SIDE)
             return true;
           continue;
         }
         const Cell_handle n = d->neighbor(i);
         if(tr.is_infinite(n) || std::find(cavity.begin(), cavity.end(), n) != cavity.end()) continue;
-        if(side_of_sphere(tr, n, p, false) == ON_BOUNDED_SIDE) cavity.push_back(n);
+        if(side_of_sphere(tr, n, bare_point(p), false) == ON_BOUNDED_SIDE) cavity.push_back(n);
       }
     }
     return false;
@@ -183,12 +184,15 @@ template <class Tr, class Constraints>
 bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constraints& constraints,
                          typename Tr::Point& p, typename Tr::Cell_handle& at)
 {
-  p = tr.geom_traits().construct_circumcenter_3_object()(c->vertex(0)->point(), c->vertex(1)->point(),
-                                                          c->vertex(2)->point(), c->vertex(3)->point());
+  // The site of a regular triangulation's cell is a weighted point of weight 0.
+  const auto center = tr.geom_traits().construct_circumcenter_3_object()(
+      bare_point(internal::bare_point(c->vertex(0)->point())), bare_point(internal::bare_point(c->vertex(1)->point())), bare_point(internal::bare_point(c->vertex(2)->point())),
+      bare_point(internal::bare_point(c->vertex(3)->point())));
   // The circumcenter of a cell too flat for double precision can be far off,
   // or not a number: such a site is refused, and the mesh stays in range.
   for(int k = 0; k < 3; ++k)
-    if(!coordinate_problem(CGAL::to_double(p[k])).empty()) return false;
+    if(!coordinate_problem(CGAL::to_double(center[k])).empty()) return false;
+  p = point_at<typename Tr::Point>(center);
   typename Tr::Locate_type lt;
   int li, lj;
   at = tr.locate(p, lt, li, lj, c);
@@ -235,7 +239,7 @@ double cell_aspect_ratio(typename Tr::Cell_handle c, Aspect_ratio_definition def
 {
   Aspect_ratio measure;
   measure.definition = definition;
-  return measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  return measure(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()), internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point()));
 }
 
 template <class Tr, class Criterion, class Constraints>

@@ -35,6 +35,14 @@ P moved_point(const P& like, const Bare& where)
   else return where;
 }
 
+/// A point of type `P` at `where`: weight 0 for a weighted point.
+template <class P, class Bare>
+P point_at(const Bare& where)
+{
+  if constexpr(Is_weighted_point<P>::value) return P(where);
+  else return where;
+}
+
 } // namespace internal
 } // namespace Edge_swapping_3
 } // namespace CGAL

@@ -30,27 +30,23 @@ struct Lexicographic_point_order
   }
 };
 
-// Side of `p` with respect to the sphere through the positively oriented
-// tetrahedron (p0, p1, p2, p3): ON_POSITIVE_SIDE means inside.
+// A degenerate (power) sphere test of p against the positively oriented
+// p0..p3, decided by the symbolic perturbation: the points in lexicographic
+// order of their bare points, the coefficient of the leading monomial is the
+// orientation of the four points left once the largest is removed (with the
+// sign of its slot); `monomials` of them are looked at.
 template <class Gt, class Point>
-Oriented_side side_of_oriented_sphere(const Gt& gt,
-                                      const Point& p0, const Point& p1,
-                                      const Point& p2, const Point& p3,
-                                      const Point& p, bool perturb)
+Oriented_side perturbed_sphere_side(const Gt& gt, const Point& p0, const Point& p1, const Point& p2,
+                                    const Point& p3, const Point& p, int monomials)
 {
-  const Oriented_side os = gt.side_of_oriented_sphere_3_object()(p0, p1, p2, p3, p);
-  if(os != ON_ORIENTED_BOUNDARY || !perturb)
-    return os;
-
   const Point* points[5] = {&p0, &p1, &p2, &p3, &p};
-  std::sort(points, points + 5, Lexicographic_point_order<Gt>{gt});
-  auto orientation = gt.orientation_3_object();
-
-  // The coefficient of the leading monomial is the orientation of the four
-  // points left once the largest point is removed (with the sign of its slot).
-  // Two monomials always suffice: five points cannot have two disjoint
-  // coplanar quadruples among the three largest.
-  for(int i = 4; i > 2; --i)
+  std::sort(points, points + 5, [&](const Point* a, const Point* b) {
+    return gt.compare_xyz_3_object()(bare_point(*a), bare_point(*b)) == SMALLER;
+  });
+  auto orientation = [&](const Point& a, const Point& b, const Point& c, const Point& d) {
+    return gt.orientation_3_object()(bare_point(a), bare_point(b), bare_point(c), bare_point(d));
+  };
+  for(int i = 4; i > 4 - monomials; --i)
   {
     if(points[i] == &p)
       return ON_NEGATIVE_SIDE; // p0..p3 is positively oriented
@@ -64,6 +60,23 @@ Oriented_side side_of_oriented_sphere(const Gt& gt,
   }
   CGAL_assertion(false);
   return ON_NEGATIVE_SIDE;
+}
+
+// Side of `p` with respect to the sphere through the positively oriented
+// tetrahedron (p0, p1, p2, p3): ON_POSITIVE_SIDE means inside.
+template <class Gt, class Point>
+Oriented_side side_of_oriented_sphere(const Gt& gt,
+                                      const Point& p0, const Point& p1,
+                                      const Point& p2, const Point& p3,
+                                      const Point& p, bool perturb)
+{
+  const Oriented_side os = gt.side_of_oriented_sphere_3_object()(p0, p1, p2, p3, p);
+  if(os != ON_ORIENTED_BOUNDARY || !perturb)
+    return os;
+
+  // Two monomials always suffice: five points cannot have two disjoint
+  // coplanar quadruples among the three largest.
+  return perturbed_sphere_side(gt, p0, p1, p2, p3, p, 2);
 }
 
 // Side of `p` with respect to the circle through the non collinear p0, p1, p2,
@@ -139,28 +152,8 @@ Oriented_side side_of_oriented_power_sphere(const Gt& gt,
   if(os != ON_ORIENTED_BOUNDARY || !perturb)
     return os;
 
-  const Weighted_point* points[5] = {&p0, &p1, &p2, &p3, &p};
-  std::sort(points, points + 5, [&](const Weighted_point* a, const Weighted_point* b) {
-    return gt.compare_xyz_3_object()(bare_point(*a), bare_point(*b)) == SMALLER;
-  });
-  auto orientation = [&](const Weighted_point& a, const Weighted_point& b, const Weighted_point& c,
-                         const Weighted_point& d) {
-    return gt.orientation_3_object()(bare_point(a), bare_point(b), bare_point(c), bare_point(d));
-  };
-  for(int i = 4; i > 1; --i)
-  {
-    if(points[i] == &p)
-      return ON_NEGATIVE_SIDE; // p0..p3 is positively oriented
-    Orientation o = COPLANAR;
-    if(points[i] == &p3) o = orientation(p0, p1, p2, p);
-    else if(points[i] == &p2) o = orientation(p0, p1, p, p3);
-    else if(points[i] == &p1) o = orientation(p0, p, p2, p3);
-    else o = orientation(p, p1, p2, p3);
-    if(o != COPLANAR)
-      return Oriented_side(o);
-  }
-  CGAL_assertion(false);
-  return ON_NEGATIVE_SIDE;
+  // Three monomials, as Regular_triangulation_3 looks at.
+  return perturbed_sphere_side(gt, p0, p1, p2, p3, p, 3);
 }
 
 // The coplanar power test of p against the positively oriented (in their
