@@ -309,9 +309,26 @@ bool plan_vertex_removal(const Tr& tr, typename Tr::Cell_handle c, int i, Pertur
     return tr.geom_traits().orientation_3_object()(bare_point(t[0]->point()), bare_point(t[1]->point()),
                                                    bare_point(t[2]->point()), bare_point(t[3]->point()));
   };
+  const Vertex_handle e = n->vertex(n->index(c));
+  // The apex's place seen from c: the candidate u must be in the closed
+  // tetrahedron of v, the facet's two other vertices and the apex, so the
+  // apex is beyond no facet of c through u and on u's side of the facet
+  // opposite it (three orientation tests before any walk).
+  std::array<Orientation, 4> apex_side;
+  for(int m = 0; m < 4; ++m)
+  {
+    if(m == i) continue;
+    std::array<Vertex_handle, 4> t = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+    t[m] = e;
+    apex_side[m] = orientation(t);
+  }
   for(int k = 0; k < 4; ++k)
   {
-    if(k == i) continue;
+    if(k == i || apex_side[k] != POSITIVE) continue;
+    bool inside = true;
+    for(int m = 0; m < 4; ++m)
+      if(m != i && m != k && apex_side[m] == POSITIVE) inside = false;
+    if(!inside) continue;
     const Vertex_handle candidate = c->vertex(k);
     // The cells around the candidate, by their facets through it (no TDS
     // mark: the link queue keeps its state there).

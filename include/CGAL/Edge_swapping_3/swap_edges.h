@@ -47,8 +47,7 @@ template <class Criterion>
 struct Criterion_rule
 {
   const Criterion& criterion;
-
-  Perturbation perturbation;
+  Perturbation perturbation; // the tie-breaking of a Delaunay criterion's test
 
   bool sees_facet_from_either_side() const
   {
