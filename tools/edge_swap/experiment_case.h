@@ -98,8 +98,7 @@ inline void add_report(Experiment_outcome& o, const ES::Swap_report& r)
 // affinely independent points start (one tetrahedron is Delaunay).
 inline void run_insertion(Plain_triangulation& tr, const Experiment_case& c, Experiment_outcome& o)
 {
-  const auto seq = ES::internal::basis_first(c.points, tr.geom_traits(),
-                                             ES::internal::insertion_sequence<K>(c.points, ES::INPUT_ORDER));
+  const auto seq = ES::insertion_sequence(c.points, ES::parameters::insertion_order(ES::INPUT_ORDER));
   const auto options = swap_parameters(c);
   Plain_triangulation::Vertex_handle hint;
   for(std::size_t k : seq)

@@ -75,7 +75,7 @@ inline int run_insert(const Insert_options& o)
         const auto at = tr.locate(p, lt, li, lj, hint);
         // Interpolation weights in the cell that holds the point (outside the hull: none).
         ES::Site_location<Triangulation> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)}, {0, 0, 0, 0}};
-        if(!tr.is_infinite(at)) where.weights = ES::internal::barycentric_weights(tr, at, p);
+        if(!tr.is_infinite(at)) where = ES::site_location(tr, at, p);
         const auto r = ES::insert_by_swapping(tr, p, criterion,
                                               ES::parameters::hint(at, ES::parameters::mesh_constraints(constraints)));
         if(r.vertex == Triangulation::Vertex_handle()) { ++refused; continue; }

@@ -6,6 +6,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_DELAUNAY_BY_INSERTION_H
 #define CGAL_EDGE_SWAPPING_3_DELAUNAY_BY_INSERTION_H
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
@@ -29,8 +30,7 @@ std::vector<std::size_t> basis_first(const std::vector<Point>& points, const Gt&
   std::size_t basis[4], found = 0;
   for(std::size_t k = 0; k < seq.size() && found < 4; ++k)
   {
-    // Weighted points are placed by their bare points.
-    auto at = [&](std::size_t m) -> decltype(auto) { return bare_point(points[seq[m]]); };
+    auto at = [&](std::size_t m) -> const Point& { return points[seq[m]]; };
     const auto& q = at(k);
     bool independent = true;
     if(found >= 1) independent = (q != at(basis[0]));
@@ -45,6 +45,28 @@ std::vector<std::size_t> basis_first(const std::vector<Point>& points, const Gt&
 }
 
 } // namespace internal
+
+/// The order in which the insertion functions take `points`: the
+/// `insertion_order` (default `SPATIAL_ORDER`, CGAL's spatial sort), with the
+/// first four affinely independent points moved to the front, so that one
+/// tetrahedron, its own Delaunay and regular triangulation, starts. Weighted
+/// points are ordered by their bare points. Named parameter `geom_traits`
+/// (default: the points' kernel).
+template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
+std::vector<std::size_t> insertion_sequence(const std::vector<Point>& points,
+                                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef std::decay_t<decltype(internal::bare_point(std::declval<const Point&>()))> Bare_point;
+  typedef typename CGAL::Kernel_traits<Bare_point>::Kernel Kernel;
+  const auto gt = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Kernel());
+  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
+  std::vector<Bare_point> bare;
+  bare.reserve(points.size());
+  for(const Point& p : points) bare.push_back(internal::bare_point(p));
+  return internal::basis_first(bare, gt, internal::insertion_sequence<std::decay_t<decltype(gt)>>(bare, order));
+}
 
 /// What `delaunay_by_insertion` did, over all points.
 template <class Tr>
@@ -99,8 +121,8 @@ Insertion_report<Tr> delaunay_by_insertion(Tr& tr, const std::vector<typename Tr
   const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
   CGAL::Real_timer timer;
   timer.start();
-  const std::vector<std::size_t> seq = internal::basis_first(
-      points, tr.geom_traits(), internal::insertion_sequence<typename Tr::Geom_traits>(points, order));
+  const std::vector<std::size_t> seq =
+      insertion_sequence(points, parameters::insertion_order(order, CGAL::parameters::geom_traits(tr.geom_traits())));
 
   Insertion_report<Tr> report;
   report.vertices.resize(points.size());
@@ -148,18 +170,14 @@ Insertion_report<Tr> regular_by_insertion(Tr& tr, const std::vector<typename Tr:
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef typename Tr::Geom_traits::Point_3 Bare_point;
   typedef typename internal::Plain_triangulation_of<Tr>::type Base;
   CGAL_precondition(tr.number_of_vertices() == 0);
   const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
   const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
   CGAL::Real_timer timer;
   timer.start();
-  std::vector<Bare_point> bare;
-  bare.reserve(points.size());
-  for(const auto& p : points) bare.push_back(internal::bare_point(p));
-  const std::vector<std::size_t> seq = internal::basis_first(
-      points, tr.geom_traits(), internal::insertion_sequence<typename Tr::Geom_traits>(bare, order));
+  const std::vector<std::size_t> seq =
+      insertion_sequence(points, parameters::insertion_order(order, CGAL::parameters::geom_traits(tr.geom_traits())));
 
   Insertion_report<Tr> report;
   report.vertices.resize(points.size());

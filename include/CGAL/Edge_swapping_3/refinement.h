@@ -60,6 +60,28 @@ struct Site_location
   std::array<double, 4> weights;                      ///< the site's barycentric coordinates in it
 };
 
+/// Where `p` falls in the finite cell `c`: its vertices and the barycentric
+/// coordinates of `p` in it (computed in double precision from volumes; a
+/// flat cell gives a quarter each), for interpolating vertex values.
+template <class Tr>
+Site_location<Tr> site_location(const Tr& tr, typename Tr::Cell_handle c, const typename Tr::Point& p)
+{
+  CGAL_precondition(!tr.is_infinite(c));
+  auto volume = tr.geom_traits().compute_volume_3_object();
+  Site_location<Tr> where{{c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}, {}};
+  double total = 0;
+  for(int k = 0; k < 4; ++k)
+  {
+    std::array<const typename Tr::Geom_traits::Point_3*, 4> q;
+    for(int m = 0; m < 4; ++m)
+      q[m] = (m == k) ? &internal::bare_point(p) : &internal::bare_point(c->vertex(m)->point());
+    where.weights[k] = CGAL::to_double(volume(*q[0], *q[1], *q[2], *q[3]));
+    total += where.weights[k];
+  }
+  for(auto& x : where.weights) x = (total != 0) ? x / total : 0.25;
+  return where;
+}
+
 /// The paper's cell-wise gradient indicator: the largest difference of the
 /// vertex values along the six edges, times the cube root of the volume.
 template <class Tr, class Value>
@@ -118,23 +140,6 @@ bool find_cell(const Tr& tr, const Heap_entry<Tr>& e, typename Tr::Cell_handle& 
 {
   int i, j, k, l;
   return tr.is_cell(e.v[0], e.v[1], e.v[2], e.v[3], c, i, j, k, l);
-}
-
-template <class Tr>
-std::array<double, 4> barycentric_weights(const Tr& tr, typename Tr::Cell_handle c, const typename Tr::Point& p)
-{
-  auto volume = tr.geom_traits().compute_volume_3_object();
-  std::array<double, 4> w;
-  double total = 0;
-  for(int k = 0; k < 4; ++k)
-  {
-    std::array<const typename Tr::Geom_traits::Point_3*, 4> q;
-    for(int m = 0; m < 4; ++m) q[m] = (m == k) ? &bare_point(p) : &bare_point(c->vertex(m)->point());
-    w[k] = CGAL::to_double(volume(*q[0], *q[1], *q[2], *q[3]));
-    total += w[k];
-  }
-  for(auto& x : w) x = (total != 0) ? x / total : 0.25;
-  return w;
 }
 
 // Whether the site p, in cell `at`, encroaches upon a constrained facet: lies
@@ -224,8 +229,7 @@ typename Tr::Vertex_handle insert_circumcenter(Tr& tr, typename Tr::Cell_handle 
     ++report.sites_refused;
     return typename Tr::Vertex_handle();
   }
-  Site_location<Tr> where{{at->vertex(0), at->vertex(1), at->vertex(2), at->vertex(3)},
-                          barycentric_weights(tr, at, p)};
+  const Site_location<Tr> where = site_location(tr, at, p);
   const auto r = insert_by_swapping(tr, p, criterion, at, constraints, options.perturbation, 100000);
   CGAL_assertion(r.is_new);
   for(int k = 0; k < number_of_flip_kinds; ++k) report.swaps[k] += r.swaps[k];
