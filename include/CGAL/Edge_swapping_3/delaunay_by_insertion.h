@@ -79,6 +79,59 @@ struct Insertion_report
   double seconds = 0;                                    ///< the time of the run
 };
 
+namespace internal {
+
+// Inserts `points` into the empty `tr` one at a time by flip insertion under
+// the Delaunay or the regular criterion, in `insertion_sequence` order; the
+// first four affinely independent points make one tetrahedron.
+template <class Tr, class Criterion, class NamedParameters>
+Insertion_report<Tr> build_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
+                                        const Criterion& criterion, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Plain_triangulation_of<Tr>::type Base;
+  CGAL_precondition(tr.number_of_vertices() == 0);
+  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
+  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::vector<std::size_t> seq =
+      insertion_sequence(points, parameters::insertion_order(order, CGAL::parameters::geom_traits(tr.geom_traits())));
+
+  Insertion_report<Tr> report;
+  report.vertices.resize(points.size());
+  typename Tr::Cell_handle hint;
+  std::size_t removed = 0;
+  for(std::size_t k : seq)
+  {
+    if(tr.dimension() < 3)
+    {
+      report.vertices[k] = static_cast<Base&>(tr).insert(points[k], hint);
+      hint = report.vertices[k]->cell();
+      continue;
+    }
+    const auto r = insert_by_swapping(tr, points[k], criterion, hint, No_constraints(), perturbation, 0);
+    report.vertices[k] = r.vertex;
+    if(r.vertex != Vertex_handle()) hint = r.vertex->cell();
+    for(int f = 0; f < number_of_flip_kinds; ++f) report.swaps[f] += r.swaps[f];
+    report.stuck_facets += r.stuck_facets;
+    removed += r.removed_vertices;
+  }
+  if(removed > 0)
+    // A vertex removed later is dead, or its slot holds another point now.
+    for(std::size_t k = 0; k < points.size(); ++k)
+    {
+      Vertex_handle& v = report.vertices[k];
+      if(v != Vertex_handle() && (!tr.tds().vertices().is_used(v) || !(v->point() == points[k]))) v = Vertex_handle();
+    }
+  report.seconds = timer.time();
+  return report;
+}
+
+} // namespace internal
+
 /// \ingroup PkgEdgeSwapping3Functions
 /// \brief Makes the empty `tr` the Delaunay triangulation of `points` by
 /// inserting them one at a time with plain flips (no helper).
@@ -113,36 +166,7 @@ template <class Tr, class NamedParameters = CGAL::parameters::Default_named_para
 Insertion_report<Tr> delaunay_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
                                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  CGAL_precondition(tr.number_of_vertices() == 0);
-  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
-  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
-  CGAL::Real_timer timer;
-  timer.start();
-  const std::vector<std::size_t> seq =
-      insertion_sequence(points, parameters::insertion_order(order, CGAL::parameters::geom_traits(tr.geom_traits())));
-
-  Insertion_report<Tr> report;
-  report.vertices.resize(points.size());
-  Vertex_handle hint;
-  for(std::size_t k : seq)
-  {
-    if(tr.dimension() < 3)
-      hint = report.vertices[k] =
-        tr.insert(points[k], hint == Vertex_handle() ? typename Tr::Cell_handle() : hint->cell());
-    else
-    {
-      const auto r = internal::insert_by_swapping(tr, points[k], Delaunay_criterion(), hint->cell(), No_constraints(),
-                                                  perturbation, 0);
-      hint = report.vertices[k] = r.vertex;
-      for(int f = 0; f < number_of_flip_kinds; ++f) report.swaps[f] += r.swaps[f];
-      report.stuck_facets += r.stuck_facets;
-    }
-  }
-  report.seconds = timer.time();
-  return report;
+  return internal::build_by_insertion(tr, points, Delaunay_criterion(), np);
 }
 
 /// \ingroup PkgEdgeSwapping3Functions
@@ -167,48 +191,7 @@ template <class Tr, class NamedParameters = CGAL::parameters::Default_named_para
 Insertion_report<Tr> regular_by_insertion(Tr& tr, const std::vector<typename Tr::Point>& points,
                                           const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef typename Tr::Vertex_handle Vertex_handle;
-  typedef typename internal::Plain_triangulation_of<Tr>::type Base;
-  CGAL_precondition(tr.number_of_vertices() == 0);
-  const Insertion_order order = choose_parameter(get_parameter(np, internal_np::insertion_order), SPATIAL_ORDER);
-  const Perturbation perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
-  CGAL::Real_timer timer;
-  timer.start();
-  const std::vector<std::size_t> seq =
-      insertion_sequence(points, parameters::insertion_order(order, CGAL::parameters::geom_traits(tr.geom_traits())));
-
-  Insertion_report<Tr> report;
-  report.vertices.resize(points.size());
-  typename Tr::Cell_handle hint;
-  std::size_t removed = 0;
-  for(std::size_t k : seq)
-  {
-    if(tr.dimension() < 3)
-    {
-      // The first four affinely independent points: one tetrahedron, regular.
-      report.vertices[k] = static_cast<Base&>(tr).insert(points[k], hint);
-      hint = report.vertices[k]->cell();
-      continue;
-    }
-    const auto r = internal::insert_by_swapping(tr, points[k], Regular_criterion(), hint, No_constraints(),
-                                                perturbation, 0);
-    report.vertices[k] = r.vertex;
-    if(r.vertex != Vertex_handle()) hint = r.vertex->cell();
-    for(int f = 0; f < number_of_flip_kinds; ++f) report.swaps[f] += r.swaps[f];
-    report.stuck_facets += r.stuck_facets;
-    removed += r.removed_vertices;
-  }
-  if(removed > 0)
-    // A vertex removed later is dead, or its slot holds another point now.
-    for(std::size_t k = 0; k < points.size(); ++k)
-    {
-      Vertex_handle& v = report.vertices[k];
-      if(v != Vertex_handle() && (!tr.tds().vertices().is_used(v) || !(v->point() == points[k]))) v = Vertex_handle();
-    }
-  report.seconds = timer.time();
-  return report;
+  return internal::build_by_insertion(tr, points, Regular_criterion(), np);
 }
 
 } // namespace Edge_swapping_3
