@@ -17,15 +17,14 @@
 #include <CGAL/Edge_swapping_3/IO/vtu.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <CGAL/Edge_swapping_3/Mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include "allocation_counter.h"
 #include "benchmark_common.h"
 #include <iostream>
 
-// The program's triangulation type (tools/edge_swap/types.h).
-typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_with_info_3<std::size_t, K>,
-                                             CGAL::Triangulation_cell_base_with_info_3<ES::Domain_cell_info, K>> Tds;
-typedef CGAL::Triangulation_3<K, Tds> Triangulation;
+// The program's triangulation type.
+typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
 typedef K::Point_3 Point;
 
 

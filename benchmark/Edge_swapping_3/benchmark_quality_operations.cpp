@@ -27,7 +27,7 @@
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include "benchmark_common.h"
-#include "mesh_files.h"
+#include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include "quality_peers.h"
 #include <algorithm>
 #include <functional>
@@ -37,7 +37,7 @@
 #include <set>
 #include <stdexcept>
 
-typedef edge_swap::Triangulation Triangulation;
+typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
 
 namespace {
 
@@ -127,7 +127,7 @@ void peer_row(const char* name, const std::function<quality_peers::Peer_result()
     std::printf("%-40s invalid output: %s\n", name, problem.c_str());
     return;
   }
-  edge_swap::mark_point_set_domain(tr);
+  ES::mark_point_set_domain(tr);
   for(std::size_t k = 0; k < cells.size(); ++k) cells[k]->info().subdomain = r.mesh.subdomains[k];
   const bool kept = quality_peers::boundary_triangles(r.mesh) == quality_peers::boundary_triangles(input);
   print(name, quality(tr, counted(tr)), r.seconds,
@@ -254,7 +254,7 @@ void build_point_set_mesh(Triangulation& tr, const quality_peers::Cell_mesh& m)
   std::vector<Triangulation::Cell_handle> cells;
   const std::string problem = ES::build_triangulation_from_cells(tr, m.points, m.cells, vertices, cells);
   if(!problem.empty()) throw std::runtime_error(problem);
-  edge_swap::mark_point_set_domain(tr);
+  ES::mark_point_set_domain(tr);
 }
 
 Cell_filter off_the_hull(const Triangulation& tr)
@@ -285,7 +285,7 @@ int main(int argc, char** argv)
   std::filesystem::create_directories(dir);
   const std::string mesh = dir + "/two_spheres.mesh";
   run_program({EDGE_SWAP_BINARY, "mesh-domain", "two-spheres", "-o", mesh});
-  const edge_swap::Input two_spheres = edge_swap::read_input(mesh);
+  const auto two_spheres = ES::IO::read_mesh_with_fields<K::Point_3>(mesh);
   std::filesystem::remove_all(dir);
 
   quality_peers::Cell_mesh two_spheres_cells{two_spheres.points, two_spheres.cells, two_spheres.cell_references};
@@ -294,7 +294,7 @@ int main(int argc, char** argv)
     std::printf("\nTwo-spheres domain mesh, flow region (subdomain 1); boundaries and subdomains kept\n");
     std::printf("(%zu boundary triangles in the file, %zu facets between subdomains or on the hull)\n",
                 two_spheres.triangles.size(), quality_peers::boundary_triangles(two_spheres_cells).size());
-    rows([&](Triangulation& tr) { edge_swap::build_mesh(tr, two_spheres); }, ES::Domain_constraints(),
+    rows([&](Triangulation& tr) { ES::build_numbered_mesh(tr, two_spheres); }, ES::Domain_constraints(),
          [](const Triangulation&) {
            return Cell_filter([](Triangulation::Cell_handle c) { return c->info().subdomain == 1; });
          },
@@ -306,13 +306,13 @@ int main(int argc, char** argv)
   {
     Triangulation tr;
     ES::insert_delaunay(tr, points);
-    edge_swap::mark_point_set_domain(tr);
+    ES::mark_point_set_domain(tr);
     delaunay = cell_mesh_of(tr);
   }
   {
     Triangulation tr;
     ES::insert_by_placing(tr, points);
-    edge_swap::mark_point_set_domain(tr);
+    ES::mark_point_set_domain(tr);
     placing = cell_mesh_of(tr);
   }
   for(const auto* input : {&delaunay, &placing})

@@ -11,6 +11,11 @@
 //   ES::refine_by_aspect_ratio(tr, target, criterion, np), ES::refine_by_gradient(tr, value, criterion, np)
 //   ES::remove_edge, ES::remove_edge_in_two_steps, ES::remove_faces, ES::smooth_vertex
 //   ES::improve_worst_tetrahedra(tr, criterion, np)     worst first, every operation
+//   ES::run_conjecture_case(c), ES::run_conjecture_experiment(...)  the conjecture laboratory
+//   ES::Mesh_with_fields, ES::build_numbered_mesh(tr, mesh)          meshes as files hold them
+//
+// CGAL/Edge_swapping_3/make_two_spheres_mesh.h (the demonstration domain,
+// meshed by Mesh_3) is left out: it brings all of Mesh_3 into a translation unit.
 //
 // (ES is CGAL::Edge_swapping_3.)
 
@@ -43,5 +48,11 @@
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <CGAL/Edge_swapping_3/Mesh_with_fields.h>
+#include <CGAL/Edge_swapping_3/mesh_with_fields_from_complex.h>
+#include <CGAL/Edge_swapping_3/Two_spheres_domain.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 
 #endif // CGAL_EDGE_SWAPPING_3_H

@@ -5,6 +5,8 @@
 // and a user's wrapper of the Delaunay criterion that keeps its fast path.
 
 #include "test_common.h"
+#include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
+#include <CGAL/Edge_swapping_3/mesh_with_fields_from_complex.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -17,6 +19,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <sstream>
 #include <unordered_map>
 
 using namespace test;
@@ -332,6 +335,91 @@ TEST_CASE("Mesh_3's output as it is: swaps, the worst-first optimizer, insertion
 }
 
 namespace {
+
+namespace {
+
+// The cells of a numbered triangulation as sorted point numbers with their subdomain.
+template <class Numbered>
+std::multiset<std::pair<std::array<std::size_t, 4>, int>> numbered_cells(const Numbered& tr)
+{
+  std::multiset<std::pair<std::array<std::size_t, 4>, int>> cells;
+  for(auto c : tr.finite_cell_handles())
+  {
+    std::array<std::size_t, 4> k;
+    for(int i = 0; i < 4; ++i) k[i] = c->vertex(i)->info();
+    std::sort(k.begin(), k.end());
+    cells.insert({k, c->info().subdomain});
+  }
+  return cells;
+}
+
+} // namespace
+
+TEST_CASE("Mesh_3's output as a mesh file: every cell, subdomain and surface facet kept, through all three formats",
+          "[cgal vocabulary][domain]")
+{
+  typedef ES::Numbered_domain_triangulation_3<K> Numbered;
+  const C3t3 c3t3 = mesh_of_two_half_balls();
+  const auto mesh = ES::mesh_with_fields_from_complex(
+      c3t3, [](int subdomain) { return subdomain; },
+      [](const std::pair<int, int>& patch) { return 10 * patch.first + patch.second; });
+  Numbered tr;
+  REQUIRE(ES::build_numbered_mesh(tr, mesh).empty());
+  REQUIRE(tr.is_valid());
+  std::map<int, std::size_t> by_subdomain, expected_by_subdomain;
+  for(auto c : tr.finite_cell_handles()) ++by_subdomain[c->info().subdomain];
+  for(auto c : c3t3.triangulation().finite_cell_handles()) ++expected_by_subdomain[c3t3.subdomain_index(c)];
+  REQUIRE(by_subdomain == expected_by_subdomain);
+  REQUIRE(by_subdomain.size() == 3); // outside (0) and the two halves
+  std::size_t constrained = 0;
+  for(auto c : tr.all_cell_handles())
+    for(int i = 0; i < 4; ++i) constrained += c->info().facet_reference[i] != ES::Domain_cell_info::no_reference;
+  REQUIRE(constrained == 2 * c3t3.number_of_facets_in_complex());
+
+  // A field, and one point inserted with its interpolated value.
+  auto with_field = mesh;
+  with_field.field_names = {"x"};
+  with_field.fields = {{}};
+  for(const auto& p : with_field.points) with_field.fields[0].push_back(CGAL::to_double(p.x()));
+  Numbered grown;
+  REQUIRE(ES::build_numbered_mesh(grown, with_field).empty());
+  const Point site(0.31, 0.02, -0.17);
+  const auto at = grown.locate(site);
+  const auto where = ES::site_location(grown, at, site);
+  const auto r = ES::insert_by_swapping(grown, site, ES::Delaunay_criterion(),
+                                        ES::parameters::mesh_constraints(ES::Domain_constraints()));
+  REQUIRE(r.is_new);
+  ES::add_numbered_vertex(with_field, r.vertex, ES::interpolated_field_values(with_field, site, where,
+                                                                               [](const std::string&, const Point&, double&) { return false; }));
+  REQUIRE(with_field.fields[0].back() == Approx(0.31).margin(1e-12)); // a linear field is interpolated exactly
+
+  const auto snapshot = ES::numbered_mesh_snapshot(grown, with_field);
+  REQUIRE(snapshot.triangles.size() == c3t3.number_of_facets_in_complex());
+  for(const std::string format : {"y.mesh", "y.vtu", "y.ele"})
+  {
+    INFO(format);
+    std::map<std::string, std::string> files;
+    ES::IO::write_mesh_with_fields(format, snapshot, [&](const std::string& name, std::function<void(std::ostream&)> write) {
+      std::ostringstream out;
+      write(out);
+      files[name] = out.str();
+    });
+    REQUIRE(files.size() == (format == "y.ele" ? 2u : 1u));
+    const auto back = format == "y.ele" ? ES::IO::mesh_with_fields_from_text<Point>(format, files["y.ele"], files["y.node"])
+                                        : ES::IO::mesh_with_fields_from_text<Point>(format, files[format]);
+    Numbered again;
+    REQUIRE(ES::build_numbered_mesh(again, back).empty());
+    if(format == "y.ele") // TetGen files have no subdomains: the cells are the same
+    {
+      REQUIRE(again.number_of_finite_cells() == grown.number_of_finite_cells());
+      REQUIRE(back.fields.size() == 1);
+    }
+    else
+      REQUIRE(numbered_cells(again) == numbered_cells(grown));
+    if(format == "y.mesh") REQUIRE(back.triangles.size() == snapshot.triangles.size());
+    if(format == "y.vtu") REQUIRE(back.fields == with_field.fields);
+  }
+}
 
 typedef CGAL::Regular_triangulation_3<K> Regular_tr;
 typedef K::Weighted_point_3 Weighted_point;

@@ -6,7 +6,11 @@
 
 #include "test_common.h"
 #include "program_runner.h"
-#include "experiment_case.h"
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
+#include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
 #include <fstream>
 #include <map>
@@ -14,23 +18,22 @@
 #include <sstream>
 
 using namespace test;
-namespace xp = edge_swap;
 
 namespace {
 
-xp::Experiment_case load_case(const std::string& name)
+ES::Conjecture_case<Point> load_case(const std::string& name)
 {
-  return xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
+  return ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
 }
 
 // The start triangulation of a case (placing or explicit cells).
-void build_start(xp::Plain_triangulation& tr, const xp::Experiment_case& c)
+void build_start(Tr& tr, const ES::Conjecture_case<Point>& c)
 {
-  if(c.start == "placing")
+  if(c.start == ES::PLACING_START)
     ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER));
   else
   {
-    std::vector<xp::Plain_triangulation::Vertex_handle> vertices;
+    std::vector<Tr::Vertex_handle> vertices;
     REQUIRE(ES::build_triangulation_from_cells(tr, c.points, c.cells, vertices).empty());
   }
 }
@@ -59,9 +62,9 @@ TEST_CASE("Joe's phenomenon: 9 points where plain swapping is stuck and the help
   // integer points: this was the only stuck one) and shrunk by `edge_swap shrink`.
   const auto c = load_case("plain_stuck_9_points.json");
   REQUIRE(c.points.size() == 9);
-  REQUIRE(c.strategy == "plain");
+  REQUIRE(c.strategy == ES::PLAIN_SWAPS);
 
-  xp::Plain_triangulation tr;
+  Tr tr;
   build_start(tr, c);
   namespace np = ES::parameters;
   const auto options = np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed)));
@@ -75,7 +78,7 @@ TEST_CASE("Joe's phenomenon: 9 points where plain swapping is stuck and the help
       REQUIRE(!ES::classify_facet(tr, f.first, f.second).is_swappable());
 
   // The helper strategy from the same start, and from the stuck end, reaches CGAL's.
-  xp::Plain_triangulation again;
+  Tr again;
   build_start(again, c);
   REQUIRE(CGAL::swap_edges_with_helper(again, options).ending == ES::CONVERGED);
   REQUIRE(ES::compare_with_delaunay(again).identical);
@@ -97,7 +100,7 @@ TEST_CASE("Fixed: the storage-order loops from 8 points (TOPCOM start) and 20 po
   {
     INFO(expected.first);
     const auto c = load_case(expected.first);
-    xp::Plain_triangulation tr;
+    Tr tr;
     build_start(tr, c);
     namespace np = ES::parameters;
     const auto report = CGAL::swap_edges_with_helper(
@@ -114,10 +117,10 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
   // each swap told apart: a help swap is made at a facet that is locally
   // Delaunay. Its swaps per cycle are checked equal to the driver's.
   const auto c = load_case("helper_storage_cycle_8_points_topcom_start.json");
-  typedef xp::Plain_triangulation::Cell_handle Cell_handle;
+  typedef Tr::Cell_handle Cell_handle;
   struct Swap { bool help; int kind; };
   std::vector<std::vector<Swap>> swaps;
-  xp::Plain_triangulation tr;
+  Tr tr;
   build_start(tr, c);
   ES::internal::Driver_settings settings;
   settings.schedule = ES::PAPER_CYCLES;
@@ -127,7 +130,7 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
   settings.cycle_visitor = [&](const ES::Cycle_record&) { swaps.emplace_back(); };
   ES::Default_flip_visitor visitor;
   const ES::No_constraints constraints;
-  ES::internal::Swap_driver<xp::Plain_triangulation, ES::No_constraints, ES::Default_flip_visitor> tracer(
+  ES::internal::Swap_driver<Tr, ES::No_constraints, ES::Default_flip_visitor> tracer(
     tr, settings, constraints, visitor);
   auto rule = [&](auto& d, Cell_handle h, int i) {
     const bool delaunay = ES::is_locally_delaunay(tr, h, i);
@@ -143,7 +146,7 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
     swaps.back().push_back({delaunay, int(conf.flip_kind())});
   };
   const auto traced = tracer.run(rule);
-  xp::Plain_triangulation again;
+  Tr again;
   build_start(again, c);
   namespace np = ES::parameters;
   const auto driver = CGAL::swap_edges_with_helper(
@@ -174,11 +177,11 @@ TEST_CASE("Fixed: the 199 cospherical points' long helper runs came from the dri
   // visited, tags kept by the driver, a uniform permutation per cycle) all
   // three converge within 46 cycles (doc/Edge_swapping_3/conjectures.md).
   const auto c = load_case("helper_random_order_long_runs_cospherical_199_points.json");
-  REQUIRE(c.order == "random");
+  REQUIRE(c.order == ES::RANDOM_ORDER);
   for(unsigned seed : {371u, 569u, 833u})
   {
     INFO("seed " << seed);
-    xp::Plain_triangulation tr;
+    Tr tr;
     build_start(tr, c);
     namespace np = ES::parameters;
     const auto report = CGAL::swap_edges_with_helper(
@@ -234,6 +237,83 @@ TEST_CASE("Experiment: every triangulation of the cube from TOPCOM and both stra
   REQUIRE(cube == 74 * 4);
 }
 
+TEST_CASE("The laboratory from C++: TOPCOM starts, both strategies, a shrink and a replay, without the program",
+          "[conjectures]")
+{
+  ES::Conjecture_experiment<Point> experiment;
+  experiment.families = {"cube-corners"};
+  experiment.first_seed = experiment.last_seed = 1;
+  experiment.starts = {"topcom", "scramble:20"};
+  experiment.strategies = {ES::PLAIN_SWAPS, ES::HELPER_STRATEGY, ES::INSERTION_WITH_PLAIN_SWAPS};
+  experiment.orders = {ES::STORAGE_ORDER, ES::RANDOM_ORDER};
+  std::size_t enumerated = 0;
+  const auto instances = ES::conjecture_instances(experiment, [&](const std::vector<Point>& points, const std::string& set) {
+    ++enumerated;
+    REQUIRE(set == "cube-corners|100|1");
+    return ES::IO::topcom_triangulations(points, 1000).triangulations;
+  });
+  REQUIRE(enumerated == 1);
+  // 74 triangulations of the cube and one scrambled start, two strategies, two orders; insertion in two orders.
+  REQUIRE(instances.instances.size() == (74 + 1) * 2 * 2 + 2);
+  std::vector<const ES::Conjecture_instance*> todo;
+  for(const auto& in : instances.instances) todo.push_back(&in);
+  // The visitor runs on the workers, one at a time: it counts, and the test checks after.
+  std::size_t runs = 0, converged = 0, counterexamples = 0, invalid = 0, equal_but_not_converged = 0;
+  std::set<std::string> seen;
+  ES::run_conjecture_experiment(todo, experiment, instances,
+                                ES::parameters::number_of_threads(2u, CGAL::parameters::visitor(
+                                    [&](const ES::Conjecture_instance& in, const ES::Conjecture_case<Point>& c,
+                                        const ES::Conjecture_outcome& o) {
+                                      ++runs;
+                                      seen.insert(in.key());
+                                      invalid += !o.valid;
+                                      equal_but_not_converged += o.equal_to_cgal != (o.ending == ES::CONVERGED);
+                                      converged += o.ending == ES::CONVERGED;
+                                      counterexamples += ES::is_counterexample(c, o);
+                                    })));
+  REQUIRE(runs == todo.size());
+  REQUIRE(invalid == 0);
+  REQUIRE(equal_but_not_converged == 0);
+  REQUIRE(seen.size() == todo.size()); // every instance once, keys distinct
+  REQUIRE(converged == runs);          // the cube: no stuck state, no loop (as the program's summary says)
+  REQUIRE(counterexamples == 0);
+  // The case of an instance is the one the program saves: its JSON runs again to the same outcome.
+  const auto c = ES::conjecture_case_of(instances.instances[3], experiment, instances);
+  const auto again = ES::IO::conjecture_case_from_json<Point>(ES::IO::conjecture_case_json(c), "memory");
+  REQUIRE(ES::run_conjecture_case(again).swaps == ES::run_conjecture_case(c).swaps);
+
+  // An error in a case names its instance; an error in the visitor comes out as it is.
+  auto bad = experiment;
+  bad.starts = {"no-such-start"};
+  const auto bad_instances = ES::conjecture_instances(bad, [](const std::vector<Point>&, const std::string&) {
+    return std::vector<std::vector<std::array<std::size_t, 4>>>();
+  });
+  std::vector<const ES::Conjecture_instance*> bad_todo{&bad_instances.instances.front()};
+  REQUIRE_THROWS_WITH(ES::run_conjecture_experiment(bad_todo, bad, bad_instances),
+                      Catch::Contains("cube-corners|100|1|no-such-start|plain|storage: unknown start"));
+  REQUIRE_THROWS_WITH(ES::run_conjecture_experiment(
+                          std::vector<const ES::Conjecture_instance*>{todo.front()}, experiment, instances,
+                          CGAL::parameters::visitor([](const ES::Conjecture_instance&, const ES::Conjecture_case<Point>&,
+                                                       const ES::Conjecture_outcome&) { throw std::logic_error("disk full"); })),
+                      "disk full");
+
+  // Shrinking Joe's 9 points with 3 more: stuck again, with at most 12 points, and the visitor saw each step.
+  auto stuck = load_case("plain_stuck_9_points.json");
+  stuck.points.emplace_back(100, 100, 100);
+  stuck.points.emplace_back(900, 120, 870);
+  stuck.points.emplace_back(50, 960, 420);
+  if(ES::run_conjecture_case(stuck).ending != ES::STUCK) stuck.points.resize(9);
+  std::size_t steps = 0;
+  const auto small = ES::shrink_conjecture_case(stuck, ES::KEEP_STUCK, CGAL::parameters::visitor([&](std::size_t) { ++steps; }));
+  REQUIRE(small.points.size() <= stuck.points.size());
+  REQUIRE((steps > 0) == (small.points.size() < stuck.points.size()));
+  REQUIRE(ES::run_conjecture_case(small).ending == ES::STUCK);
+  auto converging = small;
+  converging.strategy = ES::HELPER_STRATEGY;
+  REQUIRE_THROWS_WITH(ES::shrink_conjecture_case(converging, ES::KEEP_COUNTEREXAMPLE),
+                      Catch::Contains("does not fail as 'failure'"));
+}
+
 TEST_CASE("Experiment: a stopped run resumes and shards split the instances", "[conjectures][program]")
 {
   Workdir w;
@@ -283,8 +363,8 @@ TEST_CASE("Shrink keeps a stuck case stuck with fewer points and says the helper
   c.points.emplace_back(100, 100, 100);
   c.points.emplace_back(900, 120, 870);
   c.points.emplace_back(50, 960, 420);
-  if(xp::run_case(c).ending != "stuck") c.points.resize(9); // the extra points may unstick it: then plain 9
-  std::ofstream(w.path("case.json")) << xp::case_json(c).dump();
+  if(ES::run_conjecture_case(c).ending != ES::STUCK) c.points.resize(9); // the extra points may unstick it: then plain 9
+  std::ofstream(w.path("case.json")) << ES::IO::conjecture_case_json(c).dump();
   const Run r = w.run("shrink " + w.path("case.json") + " -o " + w.path("small.json"));
   INFO("stderr: " << r.err);
   REQUIRE(r.exit_code == 0);

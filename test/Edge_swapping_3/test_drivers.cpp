@@ -4,14 +4,13 @@
 // per-flip visitor, the uniform permutation, and the Delaunay repair.
 
 #include "test_common.h"
-#include "experiment_case.h"
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include "program_runner.h"
 #include <sstream>
 #include <map>
 #include <set>
 
 using namespace test;
-namespace xp = edge_swap;
 namespace np = ES::parameters;
 
 namespace {
@@ -93,7 +92,7 @@ struct Start
 
 std::vector<Start> replay_starts()
 {
-  const auto cospherical = xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) +
+  const auto cospherical = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) +
                                               "/helper_random_order_long_runs_cospherical_199_points.json");
   std::vector<Point> points(cospherical.points.begin(), cospherical.points.end());
   return {{"199 cospherical points, seed 371", points, ES::RANDOM_ORDER, 371},
@@ -433,8 +432,8 @@ TEST_CASE("The per-flip visitor sees every flip, old cells before and new cells 
 
 TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or the rebuild, end on CGAL's", "[drivers]")
 {
-  const auto c = xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
-  REQUIRE(c.start == "placing");
+  const auto c = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
+  REQUIRE(c.start == ES::PLACING_START);
   auto start = [&](Tr& tr) { ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER)); };
 
   SECTION("the paper's Algorithm 3 alone is stuck")
@@ -596,7 +595,7 @@ TEST_CASE("A visitor with state of its own is passed through std::ref", "[driver
 TEST_CASE("edge_swap optimize: the Delaunay repair is reported, --paper turns it off, bad schedules are refused", "[drivers][program]")
 {
   // Joe's 9 points: plain flips in the paper's cycles, random order, seed 6012, are stuck.
-  const auto c = xp::read_case_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
+  const auto c = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
   std::ostringstream node;
   node.precision(17);
   node << c.points.size() << " 3 0 0\n";

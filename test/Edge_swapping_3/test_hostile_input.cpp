@@ -5,10 +5,10 @@
 
 #include "test_common.h"
 #include "program_runner.h"
-#include "experiment_case.h"
-#include "experiment_summary.h"
 #include "output_files.h"
-#include "topcom_runner.h"
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
@@ -131,7 +131,7 @@ TEST_CASE("Defect 4: a results file is checked, line by line, before anything is
   REQUIRE(w.run(args).exit_code == 0);
   const std::string good = Workdir::slurp(w.path("r.jsonl"));
   auto first_line = nlohmann::json::parse(good.substr(0, good.find('\n')));
-  REQUIRE(edge_swap::results_line_problem(first_line).empty());
+  REQUIRE(IO::results_line_problem(first_line).empty());
   auto without = first_line;
   without.erase("start");
   auto wrong = first_line;
@@ -165,20 +165,19 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
   require_clean_rejection(w, "experiment --families random-integer --sizes 100 --starts topcom -o " + w.path("r.jsonl"),
                   "--starts topcom takes at most 20 points", {});
   // The same checks in the runner itself, whatever calls it.
-  edge_swap::Experiment_case c;
+  ES::Conjecture_case<Point> c;
   c.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
-  REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("fewer than four points"));
+  REQUIRE_THROWS_WITH(ES::run_conjecture_case(c), Catch::Contains("fewer than four points"));
   c.points.push_back(Point(1, 1, 0));
-  REQUIRE_THROWS_WITH(edge_swap::run_case(c), Catch::Contains("coplanar"));
+  REQUIRE_THROWS_WITH(ES::run_conjecture_case(c), Catch::Contains("coplanar"));
 }
 
 TEST_CASE("TOPCOM's temporary files are removed when its input is refused", "[hostile]")
 {
   // A point TOPCOM cannot take (not an integer) used to leave the input file behind.
-  bool truncated = false;
   const std::vector<Point> points = {Point(0.5, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
-  REQUIRE_THROWS(edge_swap::topcom_triangulations(points, 10, truncated));
-  const std::string prefix = "edge_swap_topcom_" + std::to_string(::getpid()) + "_";
+  REQUIRE_THROWS(IO::topcom_triangulations(points, 10));
+  const std::string prefix = "edge_swapping_3_topcom_" + std::to_string(::getpid()) + "_";
   for(const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
   {
     INFO(entry.path());
@@ -257,7 +256,7 @@ TEST_CASE("Defect 8: a full disk is an error - every write and close is checked"
   REQUIRE(r.exit_code == 2);
   REQUIRE(r.err.find("cannot write '" + w.path("full.jsonl") + "': File too large") != std::string::npos);
   // Every whole line that was written is a result; a cut last line is dropped on resume.
-  REQUIRE(edge_swap::read_results_file(w.path("full.jsonl"), false).size() >= 1);
+  REQUIRE(IO::read_results_file(w.path("full.jsonl"), false).size() >= 1);
 
   r = w.run_with(limit, "mesh-domain two-spheres -o " + w.path("big.vtu"));
   REQUIRE(r.exit_code == 2);

@@ -44,7 +44,7 @@ CGAL::Exact_rational volume_of(const IO::Medit_mesh& m, int reference)
   return v;
 }
 
-// Strictly inside the box of tools/edge_swap/flow_field.h.
+// Strictly inside the box of CGAL/Edge_swapping_3/Two_spheres_domain.h.
 bool in_box(const P3& p)
 {
   return p[0] > -3 && p[0] < 7 && std::abs(p[1]) < 2.5 && std::abs(p[2]) < 2.5;

@@ -16,7 +16,7 @@ inline int run_check(const std::string& path)
   const Input in = read_input(path);
   if(!in.is_mesh) throw Usage_error("check reads a mesh (.ele, .mesh or .vtu), not the point set '" + path + "'");
   Triangulation tr;
-  const std::string problem = build_mesh(tr, in);
+  const std::string problem = ES::build_numbered_mesh(tr, in);
   if(!problem.empty())
   {
     std::cout << path << ": invalid: " << problem << '\n';
@@ -26,7 +26,7 @@ inline int run_check(const std::string& path)
   // Delaunay under CGAL's perturbation is the perturbed Delaunay
   // triangulation, which is unique: CGAL's. Only a mesh that is not
   // Delaunay is compared cell for cell (a second triangulation in memory).
-  namespace ES = CGAL::Edge_swapping_3;
+
   const std::size_t non_delaunay = ES::number_of_non_delaunay_facets(tr);
   ES::Delaunay_comparison cmp;
   if(non_delaunay == 0)

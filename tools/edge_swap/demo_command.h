@@ -17,7 +17,7 @@ namespace edge_swap {
 /// 0 when the helper strategy ended on CGAL's Delaunay triangulation, else 1.
 inline int run_demo(std::size_t n, unsigned int seed)
 {
-  namespace ES = CGAL::Edge_swapping_3;
+
   if(n < 4) throw Usage_error("--points must be at least 4");
   CGAL::Random rng(seed);
   std::vector<Point> points;

@@ -28,7 +28,6 @@ struct Optimize_options
   std::size_t max_cycles = 1000;
 };
 
-namespace ES = CGAL::Edge_swapping_3;
 
 /// Builds the start triangulation of a point set as `--start` says.
 inline void build_start(Triangulation& tr, const Input& in, const std::string& start, unsigned int seed)
@@ -109,7 +108,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
 {
   const std::size_t cells_before = tr.number_of_finite_cells();
   namespace np = ES::parameters;
-  const ES::Quality_report report = with_constraints(in, [&](const auto& constraints) {
+  const ES::Quality_report report = ES::with_mesh_constraints(in, [&](const auto& constraints) {
     return with_criterion(o.criterion, [&](const auto& criterion) {
       if constexpr(!ES::Is_worst_tetrahedron_criterion<std::decay_t<decltype(criterion)>>::value)
         return ES::Quality_report(); // refused before any work
@@ -199,14 +198,14 @@ inline int run_optimize(const Optimize_options& o)
   if(in.is_mesh)
   {
     if(o.start_given) throw Usage_error("--start applies to a .node input; a mesh input is its own start");
-    const std::string problem = build_mesh(tr, in);
+    const std::string problem = ES::build_numbered_mesh(tr, in);
     if(!problem.empty()) throw IO::Input_error(o.input + ": " + problem);
   }
   else
   {
     require_valid_point_set(in, o.input);
     build_start(tr, in, o.start, o.seed);
-    mark_point_set_domain(tr);
+    ES::mark_point_set_domain(tr);
   }
 
   if(operations != 0) return run_worst_first(options, in, tr, operations);
@@ -229,7 +228,7 @@ inline int run_optimize(const Optimize_options& o)
 
   // A Medit mesh keeps its boundaries and subdomains; a point set or a
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
-  const ES::Swap_report report = with_constraints(in, [&](const auto& constraints) {
+  const ES::Swap_report report = ES::with_mesh_constraints(in, [&](const auto& constraints) {
     if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
     return with_criterion(o.criterion, [&](const auto& criterion) {
       return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));

@@ -6,9 +6,10 @@
 #ifndef EDGE_SWAP_REFINE_COMMANDS_H
 #define EDGE_SWAP_REFINE_COMMANDS_H
 
-#include "flow_field.h"
+#include <CGAL/Edge_swapping_3/Two_spheres_domain.h>
 #include "mesh_files.h"
 #include "optimize_command.h"
+#include <CGAL/Edge_swapping_3/mesh_statistics.h>
 #include <CGAL/Edge_swapping_3/refinement.h>
 #include <nlohmann/json.hpp>
 #include <iostream>
@@ -21,24 +22,18 @@ inline Input read_mesh(const std::string& path, Triangulation& tr)
 {
   Input in = read_input(path);
   if(!in.is_mesh) throw Usage_error("'" + path + "' is a point set; this command needs a mesh (.ele, .mesh or .vtu)");
-  const std::string problem = build_mesh(tr, in);
+  const std::string problem = ES::build_numbered_mesh(tr, in);
   if(!problem.empty()) throw IO::Input_error(path + ": " + problem);
   return in;
 }
 
 /// The values of every field at a new vertex: a synthetic field from its
 /// function, the others interpolated linearly in the cell that held the site.
-inline std::vector<double> field_values(const Input& in, const Point& p,
-                                        const ES::Site_location<Triangulation>& where)
+inline std::vector<double> field_values(const Input& in, const Point& p, const ES::Site_location<Triangulation>& where)
 {
-  std::vector<double> values(in.fields.size(), 0.0);
-  for(std::size_t f = 0; f < in.fields.size(); ++f)
-  {
-    if(synthetic_field(in.field_names[f], p, values[f])) continue;
-    for(int k = 0; k < 4; ++k)
-      if(where.weights[k] != 0) values[f] += where.weights[k] * in.fields[f][where.vertices[k]->info()];
-  }
-  return values;
+  return ES::interpolated_field_values(in, p, where, [](const std::string& name, const Point& q, double& value) {
+    return ES::two_spheres_flow_field(name, q, value);
+  });
 }
 
 inline void write_rounds(Output_files& files, const std::string& path, const ES::Refinement_report& report)
@@ -64,7 +59,7 @@ inline int run_insert(const Insert_options& o)
   const IO::Node_file node = IO::read_node_file(o.points);
   std::size_t inserted = 0, existing = 0, refused = 0;
   std::array<std::size_t, ES::number_of_flip_kinds> swaps{};
-  with_constraints(in, [&](const auto& constraints) {
+  ES::with_mesh_constraints(in, [&](const auto& constraints) {
     return with_criterion(o.criterion, [&](const auto& criterion) {
       Triangulation::Cell_handle hint;
       for(const auto& q : node.points)
@@ -83,7 +78,7 @@ inline int run_insert(const Insert_options& o)
         if(!r.is_new) { ++existing; continue; }
         ++inserted;
         for(int k = 0; k < ES::number_of_flip_kinds; ++k) swaps[k] += r.swaps[k];
-        add_vertex(in, r.vertex, field_values(in, p, where));
+        ES::add_numbered_vertex(in, r.vertex, field_values(in, p, where));
       }
       return 0;
     });
@@ -137,12 +132,12 @@ inline int run_refine(const Refine_options& o)
   {
     field = in.field_index(o.field);
     double probe;
-    if(field < 0 && synthetic_field(o.field, Point(0, 0, 0), probe))
+    if(field < 0 && ES::two_spheres_flow_field(o.field, Point(0, 0, 0), probe))
     {
       // A synthetic field not in the input: evaluate it at every vertex.
       in.field_names.push_back(o.field);
       in.fields.emplace_back();
-      for(const auto& p : in.points) { synthetic_field(o.field, p, probe); in.fields.back().push_back(probe); }
+      for(const auto& p : in.points) { ES::two_spheres_flow_field(o.field, p, probe); in.fields.back().push_back(probe); }
       field = int(in.fields.size()) - 1;
     }
     if(field < 0)
@@ -155,7 +150,7 @@ inline int run_refine(const Refine_options& o)
   }
 
   const auto new_vertex = [&](Triangulation::Vertex_handle v, const ES::Site_location<Triangulation>& where) {
-    add_vertex(in, v, field_values(in, v->point(), where));
+    ES::add_numbered_vertex(in, v, field_values(in, v->point(), where));
   };
   CGAL::Real_timer clock;
   clock.start();
@@ -168,7 +163,7 @@ inline int run_refine(const Refine_options& o)
   if(o.by == "aspect-ratio") round_visitor = progress;
 
   ES::Refinement_report total;
-  with_constraints(in, [&](const auto& constraints) {
+  ES::with_mesh_constraints(in, [&](const auto& constraints) {
     namespace np = ES::parameters;
     const auto settings = np::new_vertex_visitor(new_vertex, np::round_visitor(round_visitor, np::mesh_constraints(constraints)));
     return with_criterion(o.criterion, [&](const auto& criterion) {
@@ -218,33 +213,17 @@ inline int run_stats(const std::string& path, const std::string& json)
   check_output_paths({json});
   Triangulation tr;
   const Input in = read_mesh(path, tr);
-  std::vector<double> angles, edge_ratio, radius_ratio;
-  std::size_t cells = 0;
-  for(auto c : tr.finite_cell_handles())
-  {
-    if(in.has_references && c->info().subdomain == 0) continue;
-    ++cells;
-    const auto& a = c->vertex(0)->point(); const auto& b = c->vertex(1)->point();
-    const auto& d = c->vertex(2)->point(); const auto& e = c->vertex(3)->point();
-    for(double x : ES::dihedral_angles(a, b, d, e)) angles.push_back(x);
-    edge_ratio.push_back(ES::edge_length_ratio(a, b, d, e));
-    radius_ratio.push_back(ES::radius_ratio(a, b, d, e));
-  }
+  const ES::Quality_histograms h = ES::with_mesh_constraints(in, [&](const auto& constraints) {
+    return ES::quality_histograms(tr, ES::parameters::mesh_constraints(constraints));
+  });
+  const std::size_t cells = h.cells;
   if(cells == 0) throw IO::Input_error(path + ": no tetrahedron in the domain (every reference is 0)");
-  auto histogram = [](const std::vector<double>& v, double lo, double width, std::size_t bins) {
-    std::vector<std::size_t> h(bins, 0);
-    for(double x : v) h[std::size_t(std::min(double(bins - 1), std::max(0.0, (x - lo) / width)))]++;
-    return h;
-  };
-  auto range = [](const std::vector<double>& v) {
-    return std::make_pair(*std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()));
-  };
-  const auto [amin, amax] = range(angles);
-  const auto [emin, emax] = range(edge_ratio);
-  const auto [rmin, rmax] = range(radius_ratio);
-  const auto angle_histogram = histogram(angles, 0, 5, 36);       // 5-degree bins
-  const auto edge_histogram = histogram(edge_ratio, 1, 0.25, 40);  // 1 to 11
-  const auto radius_histogram = histogram(radius_ratio, 3, 1, 40); // 3 (regular) to 43
+  const double amin = h.dihedral_angle.min, amax = h.dihedral_angle.max;
+  const double emin = h.edge_length_ratio.min, emax = h.edge_length_ratio.max;
+  const double rmin = h.radius_ratio.min, rmax = h.radius_ratio.max;
+  const auto& angle_histogram = h.dihedral_angle.counts;
+  const auto& edge_histogram = h.edge_length_ratio.counts;
+  const auto& radius_histogram = h.radius_ratio.counts;
 
   std::cout << path << ": vertices " << tr.number_of_vertices() << ", edges " << tr.number_of_finite_edges()
             << ", faces " << tr.number_of_finite_facets() << ", cells " << tr.number_of_finite_cells()

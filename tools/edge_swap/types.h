@@ -1,29 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The triangulation the program works on: each vertex remembers the number of
 // its point, so that point i of the input is point i of the output (new
-// points are numbered after the input's).
+// points are numbered after the input's); each cell its subdomain and
+// boundary references. The program's errors.
 
 #ifndef EDGE_SWAP_TYPES_H
 #define EDGE_SWAP_TYPES_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/IO/text_input.h>
+#include <CGAL/Edge_swapping_3/Mesh_with_fields.h>
 #include <charconv>
 #include <stdexcept>
 #include <string>
 
 namespace edge_swap {
 
+namespace ES = CGAL::Edge_swapping_3;
+namespace IO = CGAL::Edge_swapping_3::IO;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
-typedef CGAL::Triangulation_vertex_base_with_info_3<std::size_t, K> Vb;
-// Cells carry a subdomain index and boundary references (Medit input).
-typedef CGAL::Triangulation_cell_base_with_info_3<CGAL::Edge_swapping_3::Domain_cell_info, K> Cb;
-typedef CGAL::Triangulation_data_structure_3<Vb, Cb> Tds;
-typedef CGAL::Triangulation_3<K, Tds> Triangulation;
+typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
+typedef ES::Mesh_with_fields<Point> Input;
 
 /// Bad options or bad input: exit code 2, nothing written.
 struct Usage_error : std::runtime_error

@@ -33,6 +33,7 @@ enum aspect_ratio_definition_t { aspect_ratio_definition };
 enum maximum_sites_t { maximum_sites };
 enum new_vertex_visitor_t { new_vertex_visitor };
 enum round_visitor_t { round_visitor };
+enum number_of_threads_t { number_of_threads };
 
 } // namespace internal_np
 
@@ -104,6 +105,8 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(new_vertex_visitor)
 /// A callable `void(const Refinement_round&)`, called by the refinement
 /// functions after each round.
 CGAL_EDGE_SWAPPING_3_PARAMETER(round_visitor)
+/// `unsigned`: the threads of `run_conjecture_experiment` (default 0: every core).
+CGAL_EDGE_SWAPPING_3_PARAMETER(number_of_threads)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER
 

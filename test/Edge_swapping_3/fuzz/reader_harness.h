@@ -10,9 +10,10 @@
 #define EDGE_SWAPPING_3_FUZZ_READER_HARNESS_H
 
 #include "readers.h"
-#include "experiment_case.h"
-#include "experiment_summary.h"
-#include "mesh_files.h"
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
 #include <algorithm>
 #include <sstream>
@@ -21,22 +22,27 @@
 
 namespace fuzz {
 
+namespace ES = CGAL::Edge_swapping_3;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
+typedef ES::Mesh_with_fields<Point> Input;
+
 namespace internal {
 
 // Builds a mesh input as `edge_swap check` does; the problem is a rejection.
-inline void build_mesh(const std::string& name, const edge_swap::Input& in, Outcome& o)
+inline void build_mesh(const std::string& name, const Input& in, Outcome& o)
 {
-  edge_swap::Triangulation tr;
-  const std::string problem = in.is_mesh ? edge_swap::build_mesh(tr, in)
+  Triangulation tr;
+  const std::string problem = in.is_mesh ? ES::build_numbered_mesh(tr, in)
                                          : CGAL::Edge_swapping_3::point_set_problem(in.points);
   if(in.is_mesh)
   {
     // Large meshes are built in the Hilbert order of their points: that
     // order must give the same verdict as the file's.
-    edge_swap::Triangulation file_order, hilbert_order;
-    std::vector<edge_swap::Triangulation::Vertex_handle> vertices;
-    std::vector<edge_swap::Triangulation::Cell_handle> cells;
-    namespace ES = CGAL::Edge_swapping_3;
+    Triangulation file_order, hilbert_order;
+    std::vector<Triangulation::Vertex_handle> vertices;
+    std::vector<Triangulation::Cell_handle> cells;
     const bool in_file_order = ES::internal::build_triangulation_from_cells(file_order, in.points, in.cells, vertices, cells,
                                                                             in.cells.size()).empty();
     const bool in_hilbert_order =
@@ -50,9 +56,9 @@ inline void build_mesh(const std::string& name, const edge_swap::Input& in, Outc
 }
 
 // The points the TOPCOM harness triangulates: a cube's corners and centre.
-inline std::vector<edge_swap::Point> topcom_points()
+inline std::vector<Point> topcom_points()
 {
-  std::vector<edge_swap::Point> p;
+  std::vector<Point> p;
   for(int k = 0; k < 8; ++k) p.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
   p.emplace_back(0.5, 0.5, 0.5);
   return p;
@@ -73,14 +79,14 @@ inline Outcome run(Reader reader, std::string_view data)
     case Reader::node:
     case Reader::medit:
     case Reader::vtu:
-      internal::build_mesh(name, edge_swap::input_from_text(name, data), o);
+      internal::build_mesh(name, ES::IO::mesh_with_fields_from_text<Point>(name, data), o);
       break;
     case Reader::ele:
     {
       const std::size_t nul = data.find('\0');
       const std::string_view node = nul == std::string_view::npos ? std::string_view() : data.substr(0, nul);
       const std::string_view ele = nul == std::string_view::npos ? data : data.substr(nul + 1);
-      internal::build_mesh(name, edge_swap::input_from_text(name, ele, node), o);
+      internal::build_mesh(name, ES::IO::mesh_with_fields_from_text<Point>(name, ele, node), o);
       break;
     }
     case Reader::topcom:
@@ -89,9 +95,9 @@ inline Outcome run(Reader reader, std::string_view data)
       const auto points = internal::topcom_points();
       for(const auto& cells : CGAL::Edge_swapping_3::IO::read_topcom_triangulations(in))
       {
-        edge_swap::Plain_triangulation tr;
-        std::vector<edge_swap::Plain_triangulation::Vertex_handle> vertices;
-        o.message = CGAL::Edge_swapping_3::build_triangulation_from_cells(tr, points, edge_swap::oriented_cells(points, cells),
+        CGAL::Triangulation_3<K> tr;
+        std::vector<CGAL::Triangulation_3<K>::Vertex_handle> vertices;
+        o.message = ES::build_triangulation_from_cells(tr, points, ES::oriented_cells(points, cells),
                                                                           vertices);
         if(!o.message.empty()) { o.message = name + ": " + o.message; return o; }
       }
@@ -102,13 +108,13 @@ inline Outcome run(Reader reader, std::string_view data)
     {
       const auto j = nlohmann::json::parse(data.begin(), data.end(), nullptr, false);
       if(j.is_discarded()) { o.message = name + ": not JSON"; break; }
-      edge_swap::Experiment_case c = edge_swap::case_from_json(j, name);
+      ES::Conjecture_case<Point> c = ES::IO::conjecture_case_from_json<Point>(j, name);
       // Run small cases, briefly: the drivers see what the file set up.
-      if(c.points.size() <= 40 && (c.start.rfind("scramble:", 0) != 0 || edge_swap::scramble_flips(c.start) <= 100))
+      if(c.points.size() <= 40 && (c.start != ES::SCRAMBLED_DELAUNAY_START || c.scramble_flips <= 100))
       {
         c.max_cycles = std::min<std::size_t>(c.max_cycles, 20);
-        const auto outcome = edge_swap::run_case(c);
-        if(outcome.ending.rfind("bad start", 0) == 0) { o.message = name + ": " + outcome.ending; break; }
+        const auto outcome = ES::run_conjecture_case(c);
+        if(outcome.bad_start) { o.message = name + ": " + ES::conjecture_ending_name(outcome); break; }
         if(!outcome.valid) throw std::logic_error("a case ended on an invalid triangulation");
       }
       o.accepted = true;
@@ -116,9 +122,9 @@ inline Outcome run(Reader reader, std::string_view data)
     }
     case Reader::results:
     {
-      const auto lines = edge_swap::read_results_text(name, std::string(data));
+      const auto lines = ES::IO::read_results_text(name, std::string(data));
       std::ostringstream summary;
-      edge_swap::print_summary(name, lines, summary);
+      ES::IO::print_results_summary(name, lines, summary);
       o.accepted = true;
       break;
     }
@@ -128,7 +134,7 @@ inline Outcome run(Reader reader, std::string_view data)
   {
     o.message = e.what();
   }
-  catch(const edge_swap::Usage_error& e)
+  catch(const std::invalid_argument& e)
   {
     o.message = e.what();
   }

@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A mesh as files hold it (points with named fields, tetrahedra by point
+// number, subdomain and boundary references), and its glue to a
+// triangulation whose vertices carry their point numbers: build the
+// triangulation from it, give new vertices their numbers and field values,
+// and take a snapshot of the triangulation to write. Reading and writing
+// files is in IO/mesh_with_fields.h.
+
+#ifndef CGAL_EDGE_SWAPPING_3_MESH_WITH_FIELDS_H
+#define CGAL_EDGE_SWAPPING_3_MESH_WITH_FIELDS_H
+
+#include <CGAL/Triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
+#include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// A mesh as a file holds it: points with named fields and, for a mesh (not a
+/// bare point set), tetrahedra with subdomain references and boundary
+/// triangles. Points inserted later are appended, so that `points` and
+/// `fields` describe the current mesh, numbered as the vertices' `info()` of
+/// a `Numbered_domain_triangulation_3`.
+template <class Point>
+struct Mesh_with_fields
+{
+  std::vector<Point> points;                            ///< by point number
+  std::vector<std::string> field_names;                 ///< names of the point fields
+  std::vector<std::vector<double>> fields;              ///< `fields[f][point]`
+  int first_index = 1;                                  ///< the first number of TetGen files (0 or 1)
+  std::vector<std::array<std::size_t, 4>> cells;        ///< tetrahedra, by point number
+  std::vector<int> cell_references;                     ///< subdomain of each cell (empty: all in subdomain 1)
+  std::vector<std::array<std::size_t, 3>> triangles;    ///< constrained (boundary) triangles
+  std::vector<int> triangle_references;                 ///< boundary reference of each triangle
+  std::vector<std::string> cell_field_names;            ///< names of the cell fields (written to VTK files)
+  std::vector<std::vector<double>> cell_fields;         ///< `cell_fields[f][cell]`
+  bool is_mesh = false;                                 ///< tetrahedra given (else a point set)
+  bool has_references = false;                          ///< subdomains and boundaries apply (Medit, VTK `subdomain`)
+
+  /// The number of the point field `name`, or -1.
+  int field_index(const std::string& name) const
+  {
+    const auto it = std::find(field_names.begin(), field_names.end(), name);
+    return it == field_names.end() ? -1 : int(it - field_names.begin());
+  }
+};
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// The largest field value supported: differences, interpolations and the
+/// gradient indicator of such values stay finite.
+constexpr double max_field_value = 1e100;
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// A triangulation for `Mesh_with_fields`: each vertex remembers its point
+/// number (`info()`), each cell its subdomain and boundary references
+/// (`Domain_cell_info`, the model `Domain_constraints`).
+template <class Gt>
+using Numbered_domain_triangulation_3 =
+    CGAL::Triangulation_3<Gt, CGAL::Triangulation_data_structure_3<
+                                  CGAL::Triangulation_vertex_base_with_info_3<std::size_t, Gt>,
+                                  CGAL::Triangulation_cell_base_with_info_3<Domain_cell_info, Gt>>>;
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// Builds in `tr` (empty) the tetrahedra of the mesh `mesh`, each vertex
+/// numbered by its point, each cell with its subdomain (1 without
+/// references, 0 for the infinite cells), and the boundary references of the
+/// triangles on their facets. Returns an empty string, or what is wrong with
+/// the mesh (see `build_triangulation_from_cells()`; a triangle that is not a
+/// facet of the tetrahedra).
+/// \tparam Tr a `Numbered_domain_triangulation_3`, or a triangulation with the same `info()` types
+template <class Tr, class Point>
+std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
+{
+  std::vector<typename Tr::Vertex_handle> vertices;
+  std::vector<typename Tr::Cell_handle> cells;
+  const std::string problem = build_triangulation_from_cells(tr, mesh.points, mesh.cells, vertices, cells);
+  if(!problem.empty()) return problem;
+  for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
+  for(auto c : tr.all_cell_handles())
+  {
+    c->info() = Domain_cell_info();
+    if(tr.is_infinite(c)) c->info().subdomain = 0;
+  }
+  // The cells come in the order of the tetrahedra read.
+  for(std::size_t k = 0; k < cells.size(); ++k)
+    cells[k]->info().subdomain = mesh.cell_references.empty() ? 1 : mesh.cell_references[k];
+  for(std::size_t k = 0; k < mesh.triangles.size(); ++k)
+  {
+    const auto& t = mesh.triangles[k];
+    typename Tr::Cell_handle c;
+    int i, j, l;
+    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+       !tr.is_facet(vertices[t[0]], vertices[t[1]], vertices[t[2]], c, i, j, l))
+      return "triangle " + std::to_string(k + 1) + " is not a facet of the tetrahedra";
+    const int f = 6 - i - j - l;
+    c->info().facet_reference[f] = mesh.triangle_references[k];
+    c->neighbor(f)->info().facet_reference[c->neighbor(f)->index(c)] = mesh.triangle_references[k];
+  }
+  return {};
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// Gives the cells of `tr`, the triangulation of a point set, its domain:
+/// every finite cell in subdomain 1, no constrained facet.
+template <class Tr>
+void mark_point_set_domain(Tr& tr)
+{
+  for(auto c : tr.all_cell_handles())
+  {
+    c->info() = Domain_cell_info();
+    c->info().subdomain = tr.is_infinite(c) ? 0 : 1;
+  }
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// Returns `run(constraints)`: `Domain_constraints` when `mesh` has
+/// references (subdomains, boundary triangles), else `No_constraints`.
+template <class Point, class Run>
+auto with_mesh_constraints(const Mesh_with_fields<Point>& mesh, Run run)
+{
+  if(mesh.has_references) return run(Domain_constraints());
+  return run(No_constraints());
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// Numbers the new vertex `v` after the points of `mesh` and appends its
+/// point and its field values (`values[f]` for field `f`).
+template <class Point, class Vertex_handle>
+void add_numbered_vertex(Mesh_with_fields<Point>& mesh, Vertex_handle v, const std::vector<double>& values)
+{
+  v->info() = mesh.points.size();
+  mesh.points.push_back(v->point());
+  for(std::size_t f = 0; f < mesh.fields.size(); ++f) mesh.fields[f].push_back(values[f]);
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// The values of the point fields of `mesh` at `p`, a new vertex that fell
+/// in the cell `where` describes (a `Site_location`, whose vertices are
+/// numbered by `info()`): a field for which `computed(name, p, value)` returns
+/// true takes that value (an analytic field such as
+/// `two_spheres_flow_field()`); the others are interpolated linearly.
+template <class Point, class Location, class Computed>
+std::vector<double> interpolated_field_values(const Mesh_with_fields<Point>& mesh, const Point& p,
+                                              const Location& where, Computed computed)
+{
+  std::vector<double> values(mesh.fields.size(), 0.0);
+  for(std::size_t f = 0; f < mesh.fields.size(); ++f)
+  {
+    if(computed(mesh.field_names[f], p, values[f])) continue;
+    for(int k = 0; k < 4; ++k)
+      if(where.weights[k] != 0) values[f] += where.weights[k] * mesh.fields[f][where.vertices[k]->info()];
+  }
+  return values;
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// The mesh that `tr` is now, numbered as `mesh` (the mesh it was built from,
+/// with its added vertices): the points where they are (smoothing moves
+/// interior ones), the point fields of `mesh`, the finite cells with their
+/// subdomains (all 1 without references), each constrained facet once (seen
+/// from the cell whose sorted point numbers come first, or from the finite
+/// side, so that the output does not depend on addresses), and the quality of
+/// each cell as cell fields (`edge_length_ratio`, `radius_ratio`,
+/// `min_dihedral_angle`, `max_dihedral_angle`).
+template <class Tr, class Point>
+Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fields<Point>& mesh)
+{
+  Mesh_with_fields<Point> out;
+  out.points = mesh.points;
+  for(auto v : tr.finite_vertex_handles())
+    if(v->info() < out.points.size()) out.points[v->info()] = v->point();
+  out.field_names = mesh.field_names;
+  out.fields = mesh.fields;
+  out.first_index = mesh.first_index;
+  out.is_mesh = true;
+  out.has_references = mesh.has_references;
+  out.cells.reserve(tr.number_of_finite_cells());
+  out.cell_field_names = {"subdomain", "edge_length_ratio", "radius_ratio", "min_dihedral_angle", "max_dihedral_angle"};
+  out.cell_fields.assign(out.cell_field_names.size(), {});
+  for(auto c : tr.finite_cell_handles())
+  {
+    out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+    const int subdomain = mesh.has_references ? c->info().subdomain : 1;
+    out.cell_references.push_back(subdomain);
+    const auto& a = c->vertex(0)->point();
+    const auto& b = c->vertex(1)->point();
+    const auto& d = c->vertex(2)->point();
+    const auto& e = c->vertex(3)->point();
+    const auto angles = dihedral_angles(a, b, d, e);
+    out.cell_fields[0].push_back(subdomain);
+    out.cell_fields[1].push_back(edge_length_ratio(a, b, d, e));
+    out.cell_fields[2].push_back(radius_ratio(a, b, d, e));
+    out.cell_fields[3].push_back(*std::min_element(angles.begin(), angles.end()));
+    out.cell_fields[4].push_back(*std::max_element(angles.begin(), angles.end()));
+  }
+  auto key = [&](typename Tr::Cell_handle c) {
+    std::array<std::size_t, 4> k;
+    for(int i = 0; i < 4; ++i) k[i] = tr.is_infinite(c->vertex(i)) ? std::size_t(-1) : c->vertex(i)->info();
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  for(auto c : tr.finite_cell_handles())
+    for(int i = 0; i < 4; ++i)
+    {
+      if(c->info().facet_reference[i] == Domain_cell_info::no_reference) continue;
+      const auto n = c->neighbor(i);
+      if(!tr.is_infinite(n) && !(key(c) < key(n))) continue;
+      out.triangles.push_back(
+          {c->vertex((i + 1) & 3)->info(), c->vertex((i + 2) & 3)->info(), c->vertex((i + 3) & 3)->info()});
+      out.triangle_references.push_back(c->info().facet_reference[i]);
+    }
+  return out;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_MESH_WITH_FIELDS_H
