@@ -21,6 +21,7 @@ namespace Edge_swapping_3 {
 /// complex), and every facet of the complex as a boundary triangle with the
 /// reference `facet_reference(c3t3.surface_patch_index(f))`.
 /// \tparam C3t3 a `Mesh_complex_3_in_triangulation_3`
+/// \param c3t3 the complex (Mesh_3's output)
 /// \param cell_reference a callable from `C3t3::Subdomain_index` to `int`
 /// \param facet_reference a callable from `C3t3::Surface_patch_index` to `int`
 template <class C3t3, class Cell_reference, class Facet_reference>

@@ -97,8 +97,14 @@ Conjecture_case<Point> conjecture_case_from_json(const nlohmann::json& j, const 
   {
     c.start = SCRAMBLED_DELAUNAY_START;
     unsigned long long flips = 0;
-    if(internal::parse_number(start.substr(9), flips) != internal::Number_status::ok || flips > 1000000000ULL)
-      fail("start scramble:K needs a whole number K from 0 to 1000000000, not '" + quote_token(start.substr(9)) + "'");
+    const std::string k = start.substr(9);
+    const auto status = k.empty() || k[0] == '+' ? internal::Number_status::not_a_number : internal::parse_number(k, flips);
+    if(status == internal::Number_status::not_a_number) fail("start scramble:K needs a whole number, not " + quote_token(k));
+    if(status == internal::Number_status::out_of_range || flips > 1000000000ULL)
+    {
+      const std::string quoted = quote_token(k);
+      fail("start scramble:K is " + quoted.substr(1, quoted.size() - 2) + ", more than 1000000000");
+    }
     c.scramble_flips = std::size_t(flips);
   }
   else if(start == "cells")

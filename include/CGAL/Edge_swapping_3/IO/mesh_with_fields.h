@@ -150,6 +150,8 @@ inline std::vector<std::string> mesh_file_paths(const std::string& path)
 /// files are opened (all or nothing, in memory). `Y.ele` with `Y.node`
 /// (point fields as attributes), `Y.mesh` (Medit: subdomains, boundary
 /// triangles) or `Y.vtu` (point fields and cell fields).
+/// \param path the file to write; its extension chooses the format
+/// \param mesh the mesh (for example `numbered_mesh_snapshot()` of a triangulation)
 /// \param add_file a callable `void(const std::string&, std::function<void(std::ostream&)>)`
 template <class Point, class Add_file>
 void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mesh, Add_file add_file)

@@ -10,6 +10,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_LABORATORY_CONJECTURE_CASE_H
 #define CGAL_EDGE_SWAPPING_3_LABORATORY_CONJECTURE_CASE_H
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
@@ -148,9 +149,10 @@ template <class Point>
 std::vector<std::array<std::size_t, 4>> oriented_cells(const std::vector<Point>& points,
                                                        std::vector<std::array<std::size_t, 4>> cells)
 {
+  const auto orientation = typename CGAL::Kernel_traits<Point>::Kernel().orientation_3_object();
   for(auto& t : cells)
     if(t[0] < points.size() && t[1] < points.size() && t[2] < points.size() && t[3] < points.size() &&
-       CGAL::orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
+       orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]) == CGAL::NEGATIVE)
       std::swap(t[0], t[1]);
   return cells;
 }
