@@ -16,7 +16,7 @@
 // mesh (.node/.ele) against `cgal_delaunay_of_node`, which reads the same
 // points and writes CGAL's Delaunay mesh; each reads, computes and writes.
 //
-//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,random,helper,cycles,rcycles] [--programs]
+//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,random,helper,cycles,rcycles] [--programs [--keep-moved DIR]]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -101,6 +101,7 @@ int main(int argc, char** argv)
   std::vector<double> sizes = {100000}, moves = {0.001, 0.01, 0.1};
   std::string contenders = "repair,helper,cycles";
   bool programs = false;
+  std::string keep; // --keep-moved DIR: the moved meshes stay there, for runs of the programs by hand
   for(int a = 1; a < argc; a += 2)
   {
     const std::string o = argv[a];
@@ -109,6 +110,7 @@ int main(int argc, char** argv)
     if(o == "--sizes") sizes = list_of(argv[a + 1]);
     else if(o == "--moves") moves = list_of(argv[a + 1]);
     else if(o == "--contenders") contenders = argv[a + 1];
+    else if(o == "--keep-moved") keep = argv[a + 1];
     else { std::cerr << "unknown option " << o << '\n'; return 2; }
   }
   {
@@ -197,7 +199,11 @@ int main(int argc, char** argv)
                     "(%.0f MiB): ratio %.2f\n", n, 100 * f, ours.first, ours.second, cgal_program.first,
                     cgal_program.second, ours.first / cgal_program.first);
         for(const char* suffix : {".node", ".ele", "_ours.node", "_ours.ele", "_cgal.node", "_cgal.ele"})
-          std::remove((stem + suffix).c_str());
+        {
+          const std::string kept = keep + "/moved_" + std::to_string(n) + "_" + std::to_string(f) + suffix;
+          if(keep.empty() || std::string(suffix).find('_') != std::string::npos || std::rename((stem + suffix).c_str(), kept.c_str()) != 0)
+            std::remove((stem + suffix).c_str());
+        }
         std::fflush(stdout);
       }
     }

@@ -301,6 +301,44 @@ TEST_CASE("Random face order is a uniform permutation, not a shuffle of 512-face
   for(const auto& s : seen) REQUIRE(std::abs(s.second - 1000) < 150);
 }
 
+TEST_CASE("Delaunay work queue: round 1 scans every interior facet once and visits the failing ones", "[drivers]")
+{
+  const unsigned seed = 7;
+  INFO("seed " << seed);
+  auto interior_facets = [](const Tr& tr) { return tr.number_of_finite_facets() - (tr.number_of_cells() - tr.number_of_finite_cells()); };
+  namespace np = ES::parameters;
+  // Already Delaunay: one round, every interior facet scanned, nothing to do.
+  Tr dt;
+  ES::insert_delaunay(dt, random_in_cube(3000, seed));
+  const std::size_t facets = interior_facets(dt);
+  for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER})
+  {
+    Tr tr = dt;
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(order));
+    REQUIRE(r.ending == ES::CONVERGED);
+    REQUIRE(r.number_of_cycles() == 1);
+    REQUIRE(r.cycles[0].visits == facets);
+    REQUIRE(r.cycles[0].total_swaps() == 0);
+  }
+  // Scrambled: round 1 sees each interior facet once (scanned; visited again by the driver
+  // when it failed the scan and still exists at its turn), the next rounds only what flips
+  // changed; the end is CGAL's triangulation.
+  for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER})
+  {
+    Tr tr = dt;
+    ES::scramble(tr, 2000, seed);
+    const std::size_t before = interior_facets(tr);
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(order).random_seed(seed));
+    REQUIRE(r.ending == ES::CONVERGED);
+    REQUIRE(r.repair_path == ES::PLAIN_FLIPS);
+    REQUIRE(r.cycles[0].visits <= before);
+    REQUIRE(r.cycles[0].visits > before / 2);
+    REQUIRE(r.cycles[0].total_swaps() > 0);
+    REQUIRE(r.number_of_visits() < 2 * before);
+    REQUIRE(ES::compare_with_delaunay(tr).identical);
+  }
+}
+
 TEST_CASE("Work queue: same Delaunay triangulation as the cycles, in fewer visits", "[drivers]")
 {
   for(unsigned seed = 1; seed <= 3; ++seed)

@@ -48,10 +48,13 @@ inline std::vector<std::string> mesh_output_paths(const std::string& path)
   }
 }
 
-/// Adds the files of the output `path` of `tr`, numbered as `in`.
+/// Adds the files of the output `path` of `tr`, numbered as `in`; a VTK
+/// file also gets the quality of each cell (for ParaView).
 inline void add_mesh_files(Output_files& files, const std::string& path, const Triangulation& tr, const Input& in)
 {
-  IO::write_mesh_with_fields(path, ES::numbered_mesh_snapshot(tr, in),
+  Input mesh = ES::numbered_mesh_snapshot(tr, in);
+  if(IO::has_extension(path, ".vtu")) ES::add_quality_cell_fields(mesh);
+  IO::write_mesh_with_fields(path, std::move(mesh),
                              [&files](const std::string& file, std::function<void(std::ostream&)> writer) {
                                files.add(file, std::move(writer));
                              });

@@ -168,9 +168,8 @@ std::vector<double> interpolated_field_values(const Mesh_with_fields<Point>& mes
 /// interior ones), the point fields of `mesh`, the finite cells with their
 /// subdomains (all 1 without references), each constrained facet once (seen
 /// from the cell whose sorted point numbers come first, or from the finite
-/// side, so that the output does not depend on addresses), and the quality of
-/// each cell as cell fields (`edge_length_ratio`, `radius_ratio`,
-/// `min_dihedral_angle`, `max_dihedral_angle`).
+/// side, so that the output does not depend on addresses), and the cell
+/// field `subdomain`. `add_quality_cell_fields()` adds the cells' quality.
 template <class Tr, class Point>
 Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fields<Point>& mesh)
 {
@@ -184,24 +183,14 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
   out.is_mesh = true;
   out.has_references = mesh.has_references;
   out.cells.reserve(tr.number_of_finite_cells());
-  out.cell_field_names = {"subdomain", "edge_length_ratio", "radius_ratio", "min_dihedral_angle", "max_dihedral_angle"};
-  out.cell_fields.assign(out.cell_field_names.size(), {});
+  out.cell_references.reserve(tr.number_of_finite_cells());
   for(auto c : tr.finite_cell_handles())
   {
     out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-    const int subdomain = mesh.has_references ? c->info().subdomain : 1;
-    out.cell_references.push_back(subdomain);
-    const auto& a = c->vertex(0)->point();
-    const auto& b = c->vertex(1)->point();
-    const auto& d = c->vertex(2)->point();
-    const auto& e = c->vertex(3)->point();
-    const auto angles = dihedral_angles(a, b, d, e);
-    out.cell_fields[0].push_back(subdomain);
-    out.cell_fields[1].push_back(edge_length_ratio(a, b, d, e));
-    out.cell_fields[2].push_back(radius_ratio(a, b, d, e));
-    out.cell_fields[3].push_back(*std::min_element(angles.begin(), angles.end()));
-    out.cell_fields[4].push_back(*std::max_element(angles.begin(), angles.end()));
+    out.cell_references.push_back(mesh.has_references ? c->info().subdomain : 1);
   }
+  out.cell_field_names = {"subdomain"};
+  out.cell_fields = {std::vector<double>(out.cell_references.begin(), out.cell_references.end())};
   auto key = [&](typename Tr::Cell_handle c) {
     std::array<std::size_t, 4> k;
     for(int i = 0; i < 4; ++i) k[i] = tr.is_infinite(c->vertex(i)) ? std::size_t(-1) : c->vertex(i)->info();
@@ -219,6 +208,35 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
       out.triangle_references.push_back(c->info().facet_reference[i]);
     }
   return out;
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// Adds to `mesh` the quality of each of its cells as cell fields
+/// (`edge_length_ratio`, `radius_ratio`, `min_dihedral_angle`,
+/// `max_dihedral_angle`), for viewers such as ParaView (VTK files keep cell fields).
+template <class Point>
+void add_quality_cell_fields(Mesh_with_fields<Point>& mesh)
+{
+  std::array<std::vector<double>, 4> q;
+  for(auto& values : q) values.reserve(mesh.cells.size());
+  for(const auto& t : mesh.cells)
+  {
+    const Point& a = mesh.points[t[0]];
+    const Point& b = mesh.points[t[1]];
+    const Point& d = mesh.points[t[2]];
+    const Point& e = mesh.points[t[3]];
+    const auto angles = dihedral_angles(a, b, d, e);
+    q[0].push_back(edge_length_ratio(a, b, d, e));
+    q[1].push_back(radius_ratio(a, b, d, e));
+    q[2].push_back(*std::min_element(angles.begin(), angles.end()));
+    q[3].push_back(*std::max_element(angles.begin(), angles.end()));
+  }
+  const char* names[4] = {"edge_length_ratio", "radius_ratio", "min_dihedral_angle", "max_dihedral_angle"};
+  for(int k = 0; k < 4; ++k)
+  {
+    mesh.cell_field_names.push_back(names[k]);
+    mesh.cell_fields.push_back(std::move(q[k]));
+  }
 }
 
 } // namespace Edge_swapping_3

@@ -17,6 +17,7 @@
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
+#include <CGAL/Edge_swapping_3/internal/facet_scan.h>
 #include <CGAL/Edge_swapping_3/internal/swap_driver.h>
 #include <type_traits>
 
@@ -157,6 +158,17 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
   std::vector<Facet_key<Tr>> stuck;
   Swap_report report = with_driver(tr, s, constraints, np, [&](auto& driver) {
     Criterion_rule<Criterion> rule{criterion, s.perturbation};
+    // Delaunay: the rule decides nothing on a locally Delaunay facet, so the
+    // first round is a scan of every facet with the in-sphere test alone, and
+    // the driver visits the facets that failed it.
+    if constexpr(delaunay)
+      if(s.schedule == WORK_QUEUE && tr.dimension() == 3)
+      {
+        const auto scan = failing_interior_facets(tr, [&](typename Tr::Cell_handle c, int i) {
+          return !is_locally_delaunay(tr, c, i, s.perturbation);
+        });
+        driver.seed_scanned(scan.first, scan.second);
+      }
     Swap_report r = driver.run(rule);
     if constexpr(delaunay)
     {

@@ -277,6 +277,17 @@ public:
     }
   }
 
+  /// Makes the first round of the work queue visit `facets` only: the
+  /// facets that a scan of all `scanned` interior facets found to need a visit
+  /// (those the rule decides nothing on are not queued). The round counts the
+  /// scan's visits, so that every interior facet is visited once in it.
+  void seed_scanned(const std::vector<std::pair<Cell_handle, int>>& facets, std::size_t scanned)
+  {
+    for(const auto& [c, i] : facets) queue_facet(c, i);
+    seeded_ = true;
+    scanned_visits_ = scanned - (std::min)(scanned, facets.size());
+  }
+
   /// After a work-queue run: the interior facets that are not locally
   /// Delaunay. A facet visited in its last configuration is among those kept
   /// (not Delaunay at their last visit); one changed since, when the round
@@ -717,7 +728,7 @@ private:
     // Round 1: every interior facet, cell by cell (unless seeded: then the
     // seeds). A cell that a flip touched is skipped: its facets that still
     // exist are queued for round 2.
-    const bool seeded = !queue_.empty();
+    const bool seeded = seeded_ || !queue_.empty();
     either_side_ = sees_facet_from_either_side(visit);
     if(!seeded)
     {
@@ -774,6 +785,13 @@ private:
     {
       if(queue_.empty())
       {
+        if(r == 1) // the scan found nothing to do: its visits are the round
+        {
+          record_ = Cycle_record();
+          record_.cycle = 1;
+          record_.visits = scanned_visits_;
+          end_round(report);
+        }
         report.ending = CONVERGED;
         break;
       }
@@ -784,6 +802,7 @@ private:
       if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(queue_, rng_);
       record_ = Cycle_record();
       record_.cycle = r;
+      if(r == 1) record_.visits = scanned_visits_;
       while(round_left_ > 0)
       {
         --round_left_;
@@ -829,6 +848,8 @@ private:
   Cycle_record record_;
   bool queueing_ = false;
   bool first_round_ = false;
+  bool seeded_ = false;              // the first round's facets were given (a scan found them)
+  std::size_t scanned_visits_ = 0;   // the scan's visits of facets not queued
 
   mutable Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> index_;
   mutable std::vector<State> state_; // by slot: the bits above
