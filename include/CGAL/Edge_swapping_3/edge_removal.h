@@ -292,9 +292,10 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
   return report;
 }
 
-/// The edges whose removal failed, with the signature of their star then.
+/// The edges whose removal failed, with the signature of their star then
+/// (a fixed amount of memory: see `Failure_cache`).
 template <class Tr>
-using Edge_removal_failures = Failed_attempts<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
+using Edge_removal_failures = Failure_cache<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
 
 /// `remove_edge` with its settings spelled out; the new cells (finite and
 /// infinite) are appended to `created`. With `failures`, a star already

@@ -255,8 +255,11 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     heap = std::priority_queue<Entry>(std::less<Entry>(), std::move(first));
   }
   std::vector<Cell_handle> created;
-  internal::Edge_removal_failures<Tr> failures;
-  internal::Multi_face_removal_failures<Tr> face_failures;
+  // Failed removals in a fixed amount of memory, an 8-byte slot per four
+  // cells each: a failure forgotten is tried again, with the same result.
+  internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? tr.number_of_finite_cells() / 4 : 0);
+  internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? tr.number_of_finite_cells() / 4
+                                                                                          : 0);
   // Two-step removal reads the cells through the ends of the edge: its
   // failures are remembered with the stamps of the two vertices, which each
   // change stamps (that of every vertex of a new or moved cell) renews.

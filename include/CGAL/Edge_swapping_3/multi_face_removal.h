@@ -210,7 +210,7 @@ private:
 /// The facets where multi-face removal failed, with the signature of the
 /// cells it read then.
 template <class Tr>
-using Multi_face_removal_failures = Failed_attempts<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
+using Multi_face_removal_failures = Failure_cache<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
 
 /// The best disk of an explored sandwich, made when it improves.
 template <class Tr, class Sandwich, class Score, class Constraints, class Visitor>

@@ -102,6 +102,7 @@ template <class Point, class Enumerate>
 Conjecture_instances conjecture_instances(const Conjecture_experiment<Point>& experiment, Enumerate enumerate)
 {
   Conjecture_instances out;
+  if(experiment.first_seed > experiment.last_seed) return out;
   const bool insertion = std::find(experiment.strategies.begin(), experiment.strategies.end(),
                                    INSERTION_WITH_PLAIN_SWAPS) != experiment.strategies.end();
   for(const auto& family : experiment.families)

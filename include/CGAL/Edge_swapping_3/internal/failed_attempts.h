@@ -15,6 +15,7 @@
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -63,6 +64,73 @@ private:
     Report report;
   };
   Flat_hash_map<Key, Failure, Hash> failures_;
+};
+
+/// Failed attempts in a fixed amount of memory: a table of fingerprints (the
+/// key's hash mixed with the signature of the cells read, and the outcome),
+/// two places per fingerprint, the older one overwritten when both are
+/// taken. A failure that was overwritten is tried again, with the same
+/// result (the attempt is a function of the cells it reads), so forgetting
+/// costs time, never a different run; only the outcome is kept, so a
+/// remembered failure comes back as a report with its outcome alone.
+template <class Key, class Hash, class Report>
+class Failure_cache
+{
+public:
+  /// Room for about `capacity` failures (a power of two, at least 2; 0: none, nothing is remembered).
+  explicit Failure_cache(std::size_t capacity)
+  {
+    if(capacity == 0) return;
+    std::size_t n = 2;
+    while(n < capacity) n *= 2;
+    slots_.assign(n, 0);
+  }
+
+  /// A report with the outcome of the failure at `key` when the cells read then had `signature`, else null.
+  const Report* find(const Key& key, std::uint64_t signature)
+  {
+    if(slots_.empty()) return nullptr;
+    const std::uint64_t f = fingerprint(key, signature);
+    const std::size_t i = place(f);
+    for(std::size_t k : {i, i ^ 1})
+      if((slots_[k] & ~std::uint64_t(0xFF)) == f)
+      {
+        found_ = Report();
+        found_.outcome = decltype(found_.outcome)((slots_[k] & 0xFF) - 1);
+        return &found_;
+      }
+    return nullptr;
+  }
+
+  /// Records the outcome of an attempt: a failure is kept, a success forgets the key.
+  void record(const Key& key, std::uint64_t signature, const Report& report, bool succeeded)
+  {
+    if(slots_.empty()) return;
+    const std::uint64_t f = fingerprint(key, signature);
+    const std::size_t i = place(f);
+    for(std::size_t k : {i, i ^ 1})
+      if((slots_[k] & ~std::uint64_t(0xFF)) == f)
+      {
+        slots_[k] = succeeded ? 0 : f | (std::uint64_t(report.outcome) + 1);
+        return;
+      }
+    if(succeeded) return;
+    // The empty place, else one of the two, in turn.
+    const std::size_t k = slots_[i] == 0 ? i : (slots_[i ^ 1] == 0 ? i ^ 1 : (i ^ std::size_t(next_++ & 1)));
+    slots_[k] = f | (std::uint64_t(report.outcome) + 1);
+  }
+
+private:
+  static std::uint64_t fingerprint(const Key& key, std::uint64_t signature)
+  {
+    // The low byte holds the outcome; a fingerprint is never 0 (an empty place).
+    return (mix_bits(signature ^ mix_bits(std::uint64_t(Hash()(key)))) & ~std::uint64_t(0xFF)) | 0x100;
+  }
+  std::size_t place(std::uint64_t f) const { return std::size_t(mix_bits(f) & (slots_.size() - 1)); }
+
+  std::vector<std::uint64_t> slots_;
+  Report found_;
+  std::uint64_t next_ = 0;
 };
 
 } // namespace internal
