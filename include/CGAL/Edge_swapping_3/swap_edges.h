@@ -10,6 +10,7 @@
 #define CGAL_EDGE_SWAPPING_3_SWAP_EDGES_H
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Flip_visitor.h>
@@ -161,15 +162,19 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
     // Delaunay: the rule decides nothing on a locally Delaunay facet, so the
     // first round is a scan of every facet with the in-sphere test alone, and
     // the driver visits the facets that failed it.
+    CGAL::Real_timer scan_timer;
     if constexpr(delaunay)
       if(s.schedule == WORK_QUEUE && tr.dimension() == 3)
       {
+        scan_timer.start();
         const auto scan = failing_interior_facets(tr, [&](typename Tr::Cell_handle c, int i) {
           return !is_locally_delaunay(tr, c, i, s.perturbation);
         });
         driver.seed_scanned(scan.first, scan.second);
+        scan_timer.stop();
       }
     Swap_report r = driver.run(rule);
+    r.seconds += scan_timer.time(); // the scan is round 1's first part
     if constexpr(delaunay)
     {
       decide_delaunay_ending(r, driver, s);
