@@ -5,6 +5,7 @@
 // cells (then it stays). Contenders, each in a child process of its own:
 //   CGAL    Delaunay_triangulation_3 of the moved points, from scratch
 //   repair  swap_edges with the Delaunay criterion (work queue, Delaunay repair)
+//   repair2 the same with number_of_threads(2): round 1's scan on two threads
 //   random  the same in random face order (a uniform permutation per round)
 //   helper  swap_edges_with_helper (work queue)
 //   cycles  swap_edges, the paper's cycles, no repair (the drivers up to issue 9 swept like this)
@@ -16,7 +17,7 @@
 // mesh (.node/.ele) against `cgal_delaunay_of_node`, which reads the same
 // points and writes CGAL's Delaunay mesh; each reads, computes and writes.
 //
-//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,random,helper,cycles,rcycles] [--programs [--keep-moved DIR]]
+//   benchmark_moving_mesh [--sizes N,...] [--moves F,...] [--contenders repair,repair2,random,helper,cycles,rcycles] [--programs [--keep-moved DIR]]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Real_timer.h>
@@ -116,7 +117,7 @@ int main(int argc, char** argv)
   {
     std::stringstream names(contenders);
     for(std::string name; std::getline(names, name, ',');)
-      if(name != "repair" && name != "random" && name != "helper" && name != "cycles" && name != "rcycles")
+      if(name != "repair" && name != "repair2" && name != "random" && name != "helper" && name != "cycles" && name != "rcycles")
       {
         std::cerr << "--contenders: unknown contender '" << name << "'\n";
         return 2;
@@ -155,6 +156,7 @@ int main(int argc, char** argv)
           CGAL::Real_timer call;
           call.start();
           if(name == "repair") r = CGAL::swap_edges(tr, ES::Delaunay_criterion());
+          else if(name == "repair2") r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::number_of_threads(2u));
           else if(name == "random") r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(ES::RANDOM_ORDER));
           else if(name == "helper") r = CGAL::swap_edges_with_helper(tr);
           else if(name == "rcycles")
@@ -168,7 +170,7 @@ int main(int argc, char** argv)
           out[1] = double(s[0] + s[1] + s[2] + s[3]);
           out[2] = double(r.number_of_cycles());
           out[3] = double(r.number_of_visits());
-          out[4] = (name == "repair" || name == "random") ? double(r.repair_path) : -1.0 - double(r.ending);
+          out[4] = (name == "repair" || name == "repair2" || name == "random") ? double(r.repair_path) : -1.0 - double(r.ending);
           out[5] = ES::compare_with_delaunay(tr).identical ? 1 : 0;
         });
         const double* v = ours.values;

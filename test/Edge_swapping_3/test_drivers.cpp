@@ -336,6 +336,15 @@ TEST_CASE("Delaunay work queue: round 1 scans every interior facet once and visi
     REQUIRE(r.cycles[0].total_swaps() > 0);
     REQUIRE(r.number_of_visits() < 2 * before);
     REQUIRE(ES::compare_with_delaunay(tr).identical);
+    // The scan on two threads finds the same facets in the same order: the same run.
+    Tr again = dt;
+    ES::scramble(again, 2000, seed);
+    const auto r2 = CGAL::swap_edges(again, ES::Delaunay_criterion(),
+                                     np::number_of_threads(2u, np::face_order(order).random_seed(seed)));
+    REQUIRE(r2.total_swaps() == r.total_swaps());
+    REQUIRE(r2.number_of_visits() == r.number_of_visits());
+    REQUIRE(r2.number_of_cycles() == r.number_of_cycles());
+    REQUIRE(cell_set(again) == cell_set(tr));
   }
 }
 

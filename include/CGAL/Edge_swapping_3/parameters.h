@@ -105,7 +105,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(new_vertex_visitor)
 /// A callable `void(const Refinement_round&)`, called by the refinement
 /// functions after each round.
 CGAL_EDGE_SWAPPING_3_PARAMETER(round_visitor)
-/// `unsigned`: the threads of `run_conjecture_experiment` (default 0: every core).
+/// `unsigned`: the threads of `run_conjecture_experiment` (default 0: every
+/// core), and of the first round's scan of `swap_edges` with a Delaunay
+/// criterion (default 1).
 CGAL_EDGE_SWAPPING_3_PARAMETER(number_of_threads)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER

@@ -157,19 +157,21 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
   const Driver_settings s = driver_settings(np, STORAGE_ORDER);
   // Where plain flips are stuck: the facets left, for the helper's first round.
   std::vector<Facet_key<Tr>> stuck;
+  const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
   Swap_report report = with_driver(tr, s, constraints, np, [&](auto& driver) {
     Criterion_rule<Criterion> rule{criterion, s.perturbation};
     // Delaunay: the rule decides nothing on a locally Delaunay facet, so the
-    // first round is a scan of every facet with the in-sphere test alone, and
-    // the driver visits the facets that failed it.
+    // first round is a scan of every facet with the in-sphere test alone (on
+    // `number_of_threads` threads), and the driver visits the facets that
+    // failed it, in the same order whatever the number of threads.
     CGAL::Real_timer scan_timer;
     if constexpr(delaunay)
       if(s.schedule == WORK_QUEUE && tr.dimension() == 3)
       {
         scan_timer.start();
-        const auto scan = failing_interior_facets(tr, [&](typename Tr::Cell_handle c, int i) {
-          return !is_locally_delaunay(tr, c, i, s.perturbation);
-        });
+        const auto scan = failing_interior_facets(
+            tr, [&](typename Tr::Cell_handle c, int i) { return !is_locally_delaunay(tr, c, i, s.perturbation); },
+            threads);
         driver.seed_scanned(scan.first, scan.second);
         scan_timer.stop();
       }
@@ -305,6 +307,11 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 ///     \cgalParamDescription{count the non-Delaunay facets after each round (a full pass)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{with a Delaunay criterion on the work queue, the threads of the first round's scan (the in-sphere test of every facet); the run is the same whatever the number}
+///     \cgalParamType{`unsigned`}
+///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{delaunay_repair}
 ///     \cgalParamDescription{with a Delaunay criterion, go on from a stuck state to the helper and the rebuild}
