@@ -100,7 +100,7 @@ Mesh_with_fields<typename K::Point_3> make_two_spheres_mesh(double size)
     for(const auto& p : internal::points_on_sphere(Point(g.center_x[s], 0, 0), g.radius, size / 2))
     {
       const auto v = c3t3.triangulation().insert(weighted(p));
-      if(v == typename Mesh_tr::Vertex_handle()) continue; // hidden by a protecting ball (never near the spheres)
+      if(v == typename Mesh_tr::Vertex_handle()) continue; // hidden by a protecting ball (the balls are on the box edges, far from the spheres)
       c3t3.set_dimension(v, 2);
       c3t3.set_index(v, domain.index_from_surface_patch_index(std::make_pair(1, 2 + s)));
     }

@@ -3,7 +3,8 @@
 // holds everything needed to run a case again; a results file holds one
 // line per instance; and the summary of a results file per family, start,
 // strategy and order, and per point set of TOPCOM starts. Every field read
-// is checked: a file names the problem, never crashes the reader.
+// is checked: a bad file gets an error that names the problem (the case and
+// results readers are fuzzed: test/Edge_swapping_3/fuzz).
 
 #ifndef CGAL_EDGE_SWAPPING_3_IO_CONJECTURE_JSON_H
 #define CGAL_EDGE_SWAPPING_3_IO_CONJECTURE_JSON_H
