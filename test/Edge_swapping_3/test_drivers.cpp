@@ -336,14 +336,21 @@ TEST_CASE("Delaunay work queue: round 1 scans every interior facet once and visi
     REQUIRE(r.cycles[0].total_swaps() > 0);
     REQUIRE(r.number_of_visits() < 2 * before);
     REQUIRE(ES::compare_with_delaunay(tr).identical);
-    // The scan on two threads finds the same facets in the same order: the same run.
+    // On two threads: the same end (the counts may differ with the copy's addresses, as above).
     Tr again = dt;
     ES::scramble(again, 2000, seed);
+    const auto scan = [&](unsigned threads) {
+      return ES::internal::failing_interior_facets(
+          again, [&](Tr::Cell_handle c, int i) { return !ES::is_locally_delaunay(again, c, i); }, threads);
+    };
+    // The scan finds the same facets in the same order whatever the number of threads.
+    const auto one = scan(1), two = scan(2), three = scan(3);
+    REQUIRE(!one.first.empty());
+    REQUIRE(two == one);
+    REQUIRE(three == one);
     const auto r2 = CGAL::swap_edges(again, ES::Delaunay_criterion(),
                                      np::number_of_threads(2u, np::face_order(order).random_seed(seed)));
-    REQUIRE(r2.total_swaps() == r.total_swaps());
-    REQUIRE(r2.number_of_visits() == r.number_of_visits());
-    REQUIRE(r2.number_of_cycles() == r.number_of_cycles());
+    REQUIRE(r2.ending == ES::CONVERGED);
     REQUIRE(cell_set(again) == cell_set(tr));
   }
 }
