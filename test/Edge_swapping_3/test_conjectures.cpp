@@ -6,12 +6,14 @@
 
 #include "test_common.h"
 #include "program_runner.h"
+#include "trace_checker.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 #include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <CGAL/Edge_swapping_3/point_families.h>
 #include <fstream>
 #include <map>
 #include <set>
@@ -406,4 +408,174 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
     REQUIRE(!fs::exists(w.path("o.jsonl")));
     REQUIRE(!fs::exists(w.path("s.json")));
   }
+}
+
+namespace {
+
+std::vector<std::string> text_lines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for(std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines)
+{
+  std::string text;
+  for(const auto& l : lines) text += l + '\n';
+  return text;
+}
+
+trace_checker::Result check_text(const std::string& text)
+{
+  std::istringstream in(text);
+  return trace_checker::check_trace(in);
+}
+
+} // namespace
+
+TEST_CASE("Traces: the independent checker confirms every visit of plain and helper runs in three face orders",
+          "[conjectures][traces]")
+{
+  std::size_t checked = 0, degenerate = 0, loops = 0;
+  for(unsigned seed = 1; seed <= 8; ++seed)
+    for(ES::Conjecture_strategy strategy : {ES::PLAIN_SWAPS, ES::HELPER_STRATEGY})
+      for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER, ES::PRIORITY_ORDER})
+      {
+        ES::Conjecture_case<Point> c;
+        c.points = ES::point_families::random_integer<Point>(11, seed);
+        c.strategy = strategy;
+        c.order = order;
+        c.seed = seed;
+        c.max_cycles = 60;
+        std::ostringstream trace;
+        const ES::Conjecture_outcome o = ES::trace_conjecture_case(c, trace);
+        const trace_checker::Result r = check_text(trace.str());
+        INFO("seed " << seed << ", " << ES::conjecture_strategy_name(strategy) << ", " << ES::face_order_name(order)
+                     << ": " << r.error);
+        if(!r.ok && r.error.find("four coplanar points") != std::string::npos)
+        {
+          ++degenerate; // the checker leaves 2-2 and 4-4 configurations out
+          continue;
+        }
+        REQUIRE(r.ok);
+        ++checked;
+        REQUIRE(r.rounds == o.cycles);
+        REQUIRE(r.swaps == o.swaps[0] + o.swaps[1] + o.swaps[2] + o.swaps[3]);
+        REQUIRE(r.end == ES::swap_ending_name(o.ending));
+        REQUIRE(r.ends_on_delaunay == o.equal_to_cgal);
+        loops += r.loop_certified;
+        // A run that did not end: in the fixed order the checker finds why.
+        if(order == ES::PRIORITY_ORDER && o.ending == ES::CYCLE_LIMIT_REACHED) REQUIRE(r.loop_certified);
+      }
+  INFO(checked << " traces confirmed, " << degenerate << " left out as degenerate, " << loops << " loops");
+  REQUIRE(checked + degenerate == 48);
+  REQUIRE(checked >= 40);
+
+  // The fixed order on the work queue too: the helper and the Delaunay repair end on CGAL's triangulation.
+  const auto points = ES::point_families::random_integer<Point>(300, 7);
+  for(bool helper : {false, true})
+  {
+    Tr tr;
+    ES::insert_by_placing(tr, points);
+    const auto np = ES::parameters::face_order(ES::PRIORITY_ORDER, CGAL::parameters::random_seed(5));
+    const auto report = helper ? CGAL::swap_edges_with_helper(tr, np) : CGAL::swap_edges(tr, ES::Delaunay_criterion(), np);
+    REQUIRE(report.ending == ES::CONVERGED);
+    REQUIRE(ES::compare_with_delaunay(tr).identical);
+  }
+}
+
+TEST_CASE("A loop of the helper strategy under a fixed face order, 8 points, certified by the independent checker",
+          "[conjectures][traces]")
+{
+  // TOPCOM's triangulation 2 of the 8-point set, priority order seed 16: the
+  // state after round 2 comes back after round 4.
+  const auto c = load_case("helper_priority_loop_8_points.json");
+  REQUIRE(c.order == ES::PRIORITY_ORDER);
+  std::ostringstream trace;
+  const auto o = ES::trace_conjecture_case(c, trace);
+  REQUIRE(o.ending == ES::CYCLE_LIMIT_REACHED);
+  const std::string saved = test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.trace.jsonl");
+  REQUIRE(trace.str() == saved); // the library writes the kept certificate again, byte for byte
+  const auto r = check_text(saved);
+  INFO(r.error);
+  REQUIRE(r.ok);
+  REQUIRE(r.loop_certified);
+  REQUIRE(r.loop_from == 2);
+  REQUIRE(r.loop_to == 4);
+  REQUIRE(r.end == "cycle limit reached");
+  REQUIRE_FALSE(r.ends_on_delaunay);
+}
+
+TEST_CASE("The trace checker rejects altered traces, naming the line", "[conjectures][traces]")
+{
+  const auto lines = text_lines(
+    test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.trace.jsonl"));
+  REQUIRE(check_text(joined(lines)).ok);
+  // The first visit that swapped and the first that set tags, and the first round's end.
+  std::size_t swap_line = 0, tag_line = 0, round_line = 0;
+  for(std::size_t k = 1; k < lines.size(); ++k)
+  {
+    const auto j = nlohmann::json::parse(lines[k]);
+    if(!swap_line && j.contains("flip") && !j["flip"].is_null()) swap_line = k;
+    if(!tag_line && j.contains("new_tags") && j.contains("facet") && !j["new_tags"].empty()) tag_line = k;
+    if(!round_line && j.contains("round")) round_line = k;
+  }
+  REQUIRE(swap_line > 0);
+  REQUIRE(tag_line > 0);
+  auto altered = [&](std::size_t k, const std::function<void(nlohmann::json&)>& change) {
+    auto copy = lines;
+    auto j = nlohmann::json::parse(copy[k]);
+    change(j);
+    copy[k] = j.dump();
+    return joined(copy);
+  };
+  auto require_rejected = [](const std::string& text, const std::string& what, std::size_t line) {
+    const auto r = check_text(text);
+    INFO(r.error);
+    REQUIRE_FALSE(r.ok);
+    REQUIRE(r.error.find(what) != std::string::npos);
+    REQUIRE(r.error.find("line " + std::to_string(line + 1) + ":") == 0);
+  };
+  require_rejected(altered(1, [](nlohmann::json& j) { j["delaunay"] = !j["delaunay"].get<bool>(); }), "in-sphere", 1);
+  require_rejected(altered(tag_line, [](nlohmann::json& j) { j["new_tags"] = nlohmann::json::array(); }), "tags set", tag_line);
+  require_rejected(altered(tag_line, [](nlohmann::json& j) { j["tagged"][0] = 1 - j["tagged"][0].get<int>(); }), "tag read", tag_line);
+  require_rejected(altered(swap_line, [](nlohmann::json& j) { j["created"][0][0] = 7 - j["created"][0][0].get<int>(); }),
+                   "", swap_line);
+  require_rejected(altered(swap_line, [](nlohmann::json& j) {
+                     j["flip"] = nullptr;
+                     j["created"] = nlohmann::json::array();
+                   }),
+                   "is missing", swap_line);
+  require_rejected(altered(round_line, [](nlohmann::json& j) { j["tagged"] = nlohmann::json::array(); }), "tags at the round's end",
+                   round_line);
+  require_rejected(altered(lines.size() - 1, [](nlohmann::json& j) { j["end"] = "converged"; }), "'converged'", lines.size() - 1);
+  require_rejected(altered(0, [](nlohmann::json& j) { j["cells"].erase(0); }), "convex hull", 0);
+  // A visit left out, or two visits in the other order: the fixed order finds it.
+  auto without = lines;
+  without.erase(without.begin() + 1);
+  require_rejected(joined(without), "fixed order", 1);
+  auto swapped = lines;
+  std::swap(swapped[1], swapped[2]);
+  require_rejected(joined(swapped), "fixed order", 1);
+}
+
+TEST_CASE("edge_swap replay --trace writes the trace the checker confirms; insertion cases are refused",
+          "[conjectures][traces][program]")
+{
+  test::Workdir w;
+  const std::string fixture = std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.json";
+  const Run r = w.run("replay " + fixture + " --trace " + w.path("t.jsonl"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(w.slurp(w.path("t.jsonl")) ==
+          w.slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.trace.jsonl"));
+  auto insertion = nlohmann::json::parse(w.slurp(fixture));
+  insertion["strategy"] = "insertion";
+  insertion["start"] = "-";
+  insertion.erase("cells");
+  w.write("insertion.json", insertion.dump());
+  require_clean_rejection(w, "replay " + w.path("insertion.json") + " --trace " + w.path("t2.jsonl"),
+                          "not for insertion", {"insertion.json", "t.jsonl"});
 }

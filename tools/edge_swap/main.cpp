@@ -94,7 +94,7 @@ int main(int argc, char** argv)
   experiment->add_option("--seeds", exp.seeds, "seeds: N or A-B (each one a point set and a face-order stream)");
   experiment->add_option("--starts", exp.starts, "placing (random order), scramble:K (Delaunay and K random flips), topcom (every fine triangulation)")->delimiter(',');
   experiment->add_option("--strategies", exp.strategies, "plain, helper, insertion")->delimiter(',');
-  experiment->add_option("--orders", exp.orders, "face orders: storage, random")->delimiter(',');
+  experiment->add_option("--orders", exp.orders, "face orders: storage, random, priority")->delimiter(',');
   experiment->add_option("--max-cycles", exp.max_cycles, "cycle limit of each run")->check(CLI::PositiveNumber);
   experiment->add_option("--threads", exp.threads, "threads (default: all cores)");
   experiment->add_option("--shard", exp.shard, "I/N: run only the instances numbered I modulo N");
@@ -113,6 +113,9 @@ int main(int argc, char** argv)
   auto* replay = app.add_subcommand("replay", "run a saved case again and print its outcome");
   replay->add_option("CASE", replay_path, "a case file written by experiment --cases or shrink")->required();
   replay->add_option("--max-cycles", replay_cycles, "another cycle limit");
+  std::string replay_trace;
+  replay->add_option("--trace", replay_trace,
+                     "write every visit and the state after every cycle here (JSON lines; doc/Edge_swapping_3/traces.md)");
 
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
@@ -149,7 +152,7 @@ int main(int argc, char** argv)
     if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
     if(*experiment) return run_experiment(exp);
     if(*shrink) return run_shrink(shr);
-    if(*replay) return run_replay(replay_path, replay_cycles);
+    if(*replay) return run_replay(replay_path, replay_cycles, replay_trace);
     return run_demo(demo_points, demo_seed);
   }
   catch(const std::exception& e)

@@ -13,13 +13,37 @@
 
 namespace edge_swap {
 
-/// Runs a saved case again and prints its outcome (JSON).
-inline int run_replay(const std::string& path, std::size_t max_cycles)
+/// Runs a saved case again and prints its outcome (JSON); with a trace path,
+/// writes the run's trace there (ES::trace_conjecture_case) as well.
+inline int run_replay(const std::string& path, std::size_t max_cycles, const std::string& trace_path)
 {
   if(max_cycles > 1000000000) throw Usage_error("--max-cycles is at most 1000000000");
+  if(!trace_path.empty()) check_output_paths({trace_path});
   ES::Conjecture_case<Point> c = IO::read_conjecture_case_file<Point>(path);
   if(max_cycles) c.max_cycles = max_cycles;
-  const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
+  if(!trace_path.empty() && c.strategy == ES::INSERTION_WITH_PLAIN_SWAPS)
+    throw Usage_error("--trace: traces are written for the plain and helper strategies, not for insertion");
+  ES::Conjecture_outcome o;
+  if(trace_path.empty())
+    o = ES::run_conjecture_case(c);
+  else
+  {
+    // The trace goes straight to its file, written all or nothing like every output.
+    Output_files files;
+    files.add(trace_path, [&](std::ostream& out) {
+      o = ES::trace_conjecture_case(c, out);
+      if(o.bad_start) throw std::invalid_argument("bad case file: " + o.start_problem);
+    });
+    try
+    {
+      files.commit();
+    }
+    catch(const Usage_error&)
+    {
+      if(o.bad_start) throw Usage_error(path + ": bad case file: " + o.start_problem);
+      throw;
+    }
+  }
   // Cells that do not form a triangulation are bad input, not an outcome.
   if(o.bad_start) throw Usage_error(path + ": bad case file: " + o.start_problem);
   std::cout << IO::conjecture_outcome_json(o).dump() << '\n';

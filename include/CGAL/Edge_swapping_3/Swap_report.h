@@ -29,7 +29,12 @@ enum Schedule
 enum Face_order
 {
   STORAGE_ORDER, ///< the order of the cells in the triangulation's container, then of the queue
-  RANDOM_ORDER   ///< a uniform random permutation of each round, drawn from `random_seed`
+  RANDOM_ORDER,  ///< a uniform random permutation of each round, drawn from `random_seed`
+  /// A fixed total order on facets by their three points, drawn from
+  /// `random_seed` and the same in every round (`facet_priority()`): the
+  /// order is a function of the triangulation, so a run that comes back to a
+  /// state at a round's end repeats itself from there.
+  PRIORITY_ORDER
 };
 
 /// What one round (one cycle of the paper) did.

@@ -34,6 +34,7 @@ enum maximum_sites_t { maximum_sites };
 enum new_vertex_visitor_t { new_vertex_visitor };
 enum round_visitor_t { round_visitor };
 enum number_of_threads_t { number_of_threads };
+enum visit_visitor_t { visit_visitor };
 
 } // namespace internal_np
 
@@ -63,6 +64,10 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(perturbation)
 CGAL_EDGE_SWAPPING_3_PARAMETER(record_non_delaunay_facets)
 /// A callable `void(const Cycle_record&)`, called after each round.
 CGAL_EDGE_SWAPPING_3_PARAMETER(cycle_visitor)
+/// A visit visitor (`No_visit_visitor` documents the two calls), called after
+/// every visit of a facet with a `Visit_record` and after every round: the
+/// traces of the laboratory. Copied, like `visitor`: pass `std::ref`.
+CGAL_EDGE_SWAPPING_3_PARAMETER(visit_visitor)
 /// A model of `MeshConstraints_3` (default `No_constraints`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(mesh_constraints)
 /// `bool`: whether `swap_edges` with the Delaunay criterion goes on from a

@@ -124,7 +124,9 @@ auto with_driver(Tr& tr, const Driver_settings& s, const Constraints& constraint
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor());
-  Swap_driver<Tr, Constraints, decltype(visitor)> driver(tr, s, constraints, visitor);
+  auto visit_visitor = choose_parameter(get_parameter(np, internal_np::visit_visitor), No_visit_visitor());
+  Swap_driver<Tr, Constraints, decltype(visitor), decltype(visit_visitor)> driver(tr, s, constraints, visitor,
+                                                                                  visit_visitor);
   return f(driver);
 }
 

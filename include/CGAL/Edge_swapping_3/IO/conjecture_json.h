@@ -91,7 +91,7 @@ Conjecture_case<Point> conjecture_case_from_json(const nlohmann::json& j, const 
                                           : std::size_t(1000);
   if(!conjecture_strategy_from_name(strategy, c.strategy))
     fail("unknown strategy '" + strategy + "' (plain, helper, insertion)");
-  if(!face_order_from_name(order, c.order)) fail("unknown order '" + order + "' (storage, random)");
+  if(!face_order_from_name(order, c.order)) fail("unknown order '" + order + "' (storage, random, priority)");
   const std::string problem = point_set_problem(c.points);
   if(!problem.empty()) fail(problem);
   if(start.rfind("scramble:", 0) == 0)

@@ -15,10 +15,12 @@
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <CGAL/Edge_swapping_3/swap_edges.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Visit_trace.h>
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -99,16 +101,24 @@ inline bool conjecture_strategy_from_name(const std::string& name, Conjecture_st
 }
 
 /// \ingroup PkgEdgeSwapping3Laboratory
-/// "storage" or "random".
-inline const char* face_order_name(Face_order o) { return o == STORAGE_ORDER ? "storage" : "random"; }
+/// "storage", "random" or "priority".
+inline const char* face_order_name(Face_order o)
+{
+  static const char* names[] = {"storage", "random", "priority"};
+  return names[o];
+}
 
 /// \ingroup PkgEdgeSwapping3Laboratory
-/// The face order named `name` ("storage", "random") in `o`; false for another name.
+/// The face order named `name` ("storage", "random", "priority") in `o`; false for another name.
 inline bool face_order_from_name(const std::string& name, Face_order& o)
 {
-  if(name != "storage" && name != "random") return false;
-  o = name == "storage" ? STORAGE_ORDER : RANDOM_ORDER;
-  return true;
+  for(Face_order k : {STORAGE_ORDER, RANDOM_ORDER, PRIORITY_ORDER})
+    if(name == face_order_name(k))
+    {
+      o = k;
+      return true;
+    }
+  return false;
 }
 
 /// \ingroup PkgEdgeSwapping3Laboratory
@@ -181,7 +191,7 @@ inline void add_swap_report(Conjecture_outcome& o, const Swap_report& r)
 template <class Tr, class Point>
 void run_insertion_case(Tr& tr, const Conjecture_case<Point>& c, Conjecture_outcome& o)
 {
-  const auto sequence = insertion_sequence(c.points, parameters::insertion_order(INPUT_ORDER));
+  const auto sequence = Edge_swapping_3::insertion_sequence(c.points, parameters::insertion_order(INPUT_ORDER));
   const auto settings = laboratory_swap_parameters(c);
   typename Tr::Vertex_handle hint;
   for(std::size_t k : sequence)
@@ -198,24 +208,24 @@ void run_insertion_case(Tr& tr, const Conjecture_case<Point>& c, Conjecture_outc
 
 } // namespace internal
 
-/// \ingroup PkgEdgeSwapping3Laboratory
-/// Runs the case `c` exactly (on a `Triangulation_3` of the points' kernel)
-/// and compares the end with CGAL's Delaunay triangulation.
-/// \pre the points can be triangulated in 3-D (else `std::invalid_argument`
-/// with `point_set_problem()`'s message)
+namespace internal {
+
+// Runs case `c`; with a trace writer, the plain and helper strategies write their trace.
 template <class Point>
-Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c)
+Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c, Visit_trace_writer<Point>* trace)
 {
   typedef typename CGAL::Kernel_traits<Point>::Kernel K;
   typedef CGAL::Triangulation_3<K> Tr;
   const std::string problem = point_set_problem(c.points);
   if(!problem.empty()) throw std::invalid_argument(problem);
+  if(trace != nullptr && c.strategy == INSERTION_WITH_PLAIN_SWAPS)
+    throw std::invalid_argument("traces are written for the plain and helper strategies, not for insertion");
   Conjecture_outcome o;
   CGAL::Real_timer timer;
   timer.start();
   Tr tr;
   if(c.strategy == INSERTION_WITH_PLAIN_SWAPS)
-    internal::run_insertion_case(tr, c, o);
+    run_insertion_case(tr, c, o);
   else
   {
     switch(c.start)
@@ -228,7 +238,7 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c)
       case GIVEN_CELLS_START:
       {
         std::vector<typename Tr::Vertex_handle> vertices;
-        o.start_problem = build_triangulation_from_cells(tr, c.points, c.cells, vertices);
+        o.start_problem = Edge_swapping_3::build_triangulation_from_cells(tr, c.points, c.cells, vertices);
         if(!o.start_problem.empty())
         {
           o.bad_start = true;
@@ -238,10 +248,25 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c)
       }
       default: throw std::invalid_argument("the plain and helper strategies need a start triangulation");
     }
-    const auto settings = internal::laboratory_swap_parameters(c);
-    const Swap_report r = c.strategy == PLAIN_SWAPS ? CGAL::swap_edges(tr, Delaunay_criterion(), settings)
-                                                    : CGAL::swap_edges_with_helper(tr, settings);
-    internal::add_swap_report(o, r);
+    const auto settings = laboratory_swap_parameters(c);
+    auto run = [&](const auto& np) {
+      return c.strategy == PLAIN_SWAPS ? CGAL::swap_edges(tr, Delaunay_criterion(), np)
+                                       : CGAL::swap_edges_with_helper(tr, np);
+    };
+    Swap_report r;
+    if(trace != nullptr)
+    {
+      trace->start(tr, {{"strategy", conjecture_strategy_name(c.strategy)},
+                        {"schedule", "cycles"},
+                        {"order", face_order_name(c.order)},
+                        {"seed", c.seed},
+                        {"max_rounds", c.max_cycles}});
+      r = run(parameters::visit_visitor(std::ref(*trace), settings));
+      trace->finish(swap_ending_name(r.ending), r.number_of_cycles());
+    }
+    else
+      r = run(settings);
+    add_swap_report(o, r);
     o.ending = r.ending;
     o.non_delaunay_facets = r.non_delaunay_facets;
   }
@@ -249,6 +274,30 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c)
   o.equal_to_cgal = o.valid && compare_with_delaunay(tr).identical;
   o.seconds = timer.time();
   return o;
+}
+
+} // namespace internal
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// Runs the case `c` exactly (on a `Triangulation_3` of the points' kernel)
+/// and compares the end with CGAL's Delaunay triangulation.
+/// \pre the points can be triangulated in 3-D (else `std::invalid_argument`
+/// with `point_set_problem()`'s message)
+template <class Point>
+Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c)
+{
+  return internal::run_conjecture_case<Point>(c, nullptr);
+}
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// Runs the case `c` as `run_conjecture_case()` does and writes its trace to
+/// `out` (`Visit_trace_writer`): every visit and the state after every cycle.
+/// \pre the strategy is plain or helper (else `std::invalid_argument`)
+template <class Point>
+Conjecture_outcome trace_conjecture_case(const Conjecture_case<Point>& c, std::ostream& out)
+{
+  Visit_trace_writer<Point> writer(out, c.points);
+  return internal::run_conjecture_case<Point>(c, &writer);
 }
 
 } // namespace Edge_swapping_3

@@ -21,7 +21,9 @@
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
+#include <CGAL/Edge_swapping_3/Visit_record.h>
 #include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
+#include <CGAL/Edge_swapping_3/internal/facet_priority.h>
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
@@ -31,6 +33,7 @@
 #include <cstring>
 #include <deque>
 #include <functional>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 #include <type_traits>
@@ -142,9 +145,12 @@ struct Vertex_slot_triple_hash
   }
 };
 
-template <class Tr, class Constraints, class Visitor>
+template <class Tr, class Constraints, class Visitor, class VisitVisitor = No_visit_visitor>
 class Swap_driver
 {
+  static constexpr bool tracing = !std::is_same<std::decay_t<decltype(unwrap(std::declval<VisitVisitor&>()))>,
+                                                No_visit_visitor>::value;
+
 public:
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -157,6 +163,13 @@ public:
     : tr_(tr), settings_(settings), constraints_(constraints), visitor_(visitor), rng_(settings.random_seed),
       index_(tr.tds().cells()), vertex_index_(tr.tds().vertices())
   {}
+
+  Swap_driver(Tr& tr, const Driver_settings& settings, const Constraints& constraints, Visitor& visitor,
+              VisitVisitor& visit_visitor)
+    : Swap_driver(tr, settings, constraints, visitor)
+  {
+    visit_visitor_ = &visit_visitor;
+  }
 
   Tr& triangulation() { return tr_; }
   const Constraints& constraints() const { return constraints_; }
@@ -174,6 +187,8 @@ public:
     s |= TAGGED;
     any_tag_ = true;
     ++record_.new_tags;
+    if constexpr(tracing)
+      if(trace_ != nullptr) trace_->new_tags.push_back(cell_vertices(c));
     if(!queueing_) return;
     for(int i = 0; i < 4; ++i) facet_changed(c, i);
     if(registered_facets_ > 0)
@@ -203,6 +218,12 @@ public:
     std::array<Cell_handle, 4> created;
     const int n = execute_flip(tr_, plan, created, constraints_);
     unwrap(visitor_).after_flip(tr_, plan, created, n);
+    if constexpr(tracing)
+      if(trace_ != nullptr)
+      {
+        trace_->flip = int(plan.kind);
+        for(int k = 0; k < n; ++k) trace_->created.push_back(cell_vertices(created[k]));
+      }
     if(!queueing_)
       relist_made_again(created, n);
     else
@@ -518,7 +539,88 @@ private:
   void visit_facet(Rule& visit, Cell_handle c, int i)
   {
     ++record_.visits;
-    visit(*this, c, i);
+    if constexpr(tracing)
+    {
+      Visit_record<Tr> record;
+      before_visit(record, c, i);
+      trace_ = &record;
+      visit(*this, c, i);
+      trace_ = nullptr;
+      unwrap(*visit_visitor_).visit(tr_, record);
+    }
+    else
+      visit(*this, c, i);
+  }
+
+  typename Visit_record<Tr>::Cell_vertices cell_vertices(Cell_handle c) const
+  {
+    return {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
+  }
+
+  /// What a trace says of facet (c, i) before its visit.
+  void before_visit(Visit_record<Tr>& record, Cell_handle c, int i) const
+  {
+    const Cell_handle n = c->neighbor(i);
+    for(int k = 0; k < 3; ++k) record.facet[k] = c->vertex((i + 1 + k) & 3);
+    record.apexes = {c->vertex(i), n->vertex(n->index(c))};
+    if constexpr(!Is_weighted_point<typename Tr::Point>::value)
+      record.locally_delaunay = is_locally_delaunay(tr_, c, i, settings_.perturbation);
+    const Configuration conf = classify_facet(tr_, c, i);
+    record.kind = conf.kind();
+    record.cells.push_back(cell_vertices(c));
+    record.tagged_before.push_back(is_tagged(c));
+    record.cells.push_back(cell_vertices(n));
+    record.tagged_before.push_back(is_tagged(n));
+    for(int k = 1; k < conf.number_of_tetrahedra(); ++k)
+      if(conf.tetrahedron(k) != n)
+      {
+        record.cells.push_back(cell_vertices(conf.tetrahedron(k)));
+        record.tagged_before.push_back(is_tagged(conf.tetrahedron(k)));
+      }
+  }
+
+  /// The priority of facet (c, i) in `PRIORITY_ORDER`.
+  std::uint64_t priority_of(Cell_handle c, int i) const
+  {
+    return facet_priority(settings_.random_seed, bare_point(c->vertex((i + 1) & 3)->point()),
+                          bare_point(c->vertex((i + 2) & 3)->point()), bare_point(c->vertex((i + 3) & 3)->point()));
+  }
+
+  /// The sorted points of facet (c, i): the order of facets of equal priority.
+  std::array<typename Tr::Geom_traits::Point_3, 3> sorted_points(Cell_handle c, int i) const
+  {
+    std::array<typename Tr::Geom_traits::Point_3, 3> p;
+    for(int k = 0; k < 3; ++k) p[k] = bare_point(c->vertex((i + 1 + k) & 3)->point());
+    const auto compare = tr_.geom_traits().compare_xyz_3_object();
+    std::sort(p.begin(), p.end(), [&](const auto& a, const auto& b) { return compare(a, b) == SMALLER; });
+    return p;
+  }
+
+  /// Sorts facet entries (slot and index) into `PRIORITY_ORDER`; with
+  /// `queued_only`, entries whose facet is not queued go last.
+  template <class Entries>
+  void sort_by_priority(Entries& entries, bool queued_only)
+  {
+    constexpr std::uint64_t none = std::numeric_limits<std::uint64_t>::max();
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
+    keyed.reserve(entries.size());
+    for(std::uint32_t slot : entries)
+    {
+      const bool live = !queued_only || (state_[slot / 4] & (QUEUED << (slot % 4)));
+      keyed.emplace_back(live ? priority_of(cell_in_slot(slot), int(slot % 4)) : none, slot);
+    }
+    const auto compare = tr_.geom_traits().compare_xyz_3_object();
+    std::sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+      if(a.first != b.first) return a.first < b.first;
+      if(a.first == none || a.second == b.second) return a.second < b.second;
+      const auto p = sorted_points(cell_in_slot(a.second), int(a.second % 4));
+      const auto q = sorted_points(cell_in_slot(b.second), int(b.second % 4));
+      for(int k = 0; k < 3; ++k)
+        if(const auto r = compare(p[k], q[k]); r != EQUAL) return r == SMALLER;
+      return a.second < b.second; // the same facet from its two cells
+    });
+    std::size_t k = 0;
+    for(auto& entry : entries) entry = keyed[k++].second;
   }
 
   void end_round(Swap_report& report)
@@ -528,6 +630,8 @@ private:
       record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
     report.cycles.push_back(record_);
     if(settings_.cycle_visitor) settings_.cycle_visitor(record_);
+    if constexpr(tracing)
+      unwrap(*visit_visitor_).end_of_round(tr_, record_, [this](Cell_handle c) { return is_tagged(c); });
   }
 
   // ---- the paper's cycles ----
@@ -553,7 +657,7 @@ private:
       std::uint32_t entry = here;
       if(!(s & (MOVED_IN << i)))
       {
-        if(settings_.face_order != RANDOM_ORDER) displaced_.push(entry); // it leaves its slot
+        if(settings_.face_order == STORAGE_ORDER) displaced_.push(entry); // it leaves its slot
       }
       else
       {
@@ -657,8 +761,8 @@ private:
     queueing_ = false;
     Swap_report report;
     report.ending = CYCLE_LIMIT_REACHED;
-    const bool random = settings_.face_order == RANDOM_ORDER;
-    // Random order: the entries, shuffled. A deque frees its front as the cycle
+    const bool random = settings_.face_order != STORAGE_ORDER;
+    // Random and priority order: the entries, shuffled or sorted. A deque frees its front as the cycle
     // consumes it, while the tables of moved facets grow.
     std::deque<std::uint32_t> listed;
     for(std::size_t round = 1; round <= settings_.max_rounds; ++round)
@@ -675,7 +779,10 @@ private:
           }
       if(random)
       {
-        shuffle_uniformly(listed, rng_);
+        if(settings_.face_order == RANDOM_ORDER)
+          shuffle_uniformly(listed, rng_);
+        else
+          sort_by_priority(listed, false);
         while(!listed.empty())
         {
           const std::uint32_t entry = listed.front();
@@ -728,8 +835,13 @@ private:
     // Round 1: every interior facet, cell by cell (unless seeded: then the
     // seeds). A cell that a flip touched is skipped: its facets that still
     // exist are queued for round 2.
-    const bool seeded = seeded_ || !queue_.empty();
     either_side_ = sees_facet_from_either_side(visit);
+    // Priority order: round 1 is every interior facet, sorted like the others.
+    if(settings_.face_order == PRIORITY_ORDER && !seeded_ && queue_.empty())
+      for(Cell_handle c : tr_.finite_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(!tr_.is_infinite(c->neighbor(i)) && address_of(c) < address_of(c->neighbor(i))) queue_facet(c, i);
+    const bool seeded = seeded_ || !queue_.empty();
     if(!seeded)
     {
       first_round_ = true;
@@ -800,6 +912,7 @@ private:
       // back as this round's leave the front.
       round_left_ = queue_.size();
       if(settings_.face_order == RANDOM_ORDER) shuffle_uniformly(queue_, rng_);
+      if(settings_.face_order == PRIORITY_ORDER) sort_by_priority(queue_, true);
       record_ = Cycle_record();
       record_.cycle = r;
       if(r == 1) record_.visits = scanned_visits_;
@@ -874,6 +987,8 @@ private:
   Bit_filter<Edge, Edge_point_hash> may_be_registered_;
   Cell_handle current_cell_; // the facet under visit
   int current_index_ = 0;
+  VisitVisitor* visit_visitor_ = nullptr;
+  Visit_record<Tr>* trace_ = nullptr; // the record of the visit under way (tracing only)
 };
 
 } // namespace internal

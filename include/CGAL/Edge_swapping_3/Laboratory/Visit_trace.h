@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Traces of the laboratory: every visit of a run (facet, configuration, tags
+// read and set, decision, flip) and the whole state (cells and tags) at every
+// round's end, as JSON lines with the points numbered as in the case. An
+// independent program replays a trace from its start and checks each line
+// (test/Edge_swapping_3/trace_checker.h); the format is in
+// doc/Edge_swapping_3/traces.md.
+
+#ifndef CGAL_EDGE_SWAPPING_3_LABORATORY_VISIT_TRACE_H
+#define CGAL_EDGE_SWAPPING_3_LABORATORY_VISIT_TRACE_H
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Edge_swapping_3/Flip_plan.h>
+#include <CGAL/Edge_swapping_3/Visit_record.h>
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <nlohmann/json.hpp>
+#include <algorithm>
+#include <array>
+#include <map>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// A visit visitor (`visit_visitor`) that writes a trace to a stream, the
+/// points numbered by their place in `points`.
+template <class Point>
+class Visit_trace_writer
+{
+public:
+  /// \pre the points are distinct
+  Visit_trace_writer(std::ostream& out, const std::vector<Point>& points) : out_(out)
+  {
+    for(std::size_t k = 0; k < points.size(); ++k) number_.emplace(points[k], k);
+  }
+
+  /// Writes the first line: `header` (what the run is) with the points and the start cells.
+  template <class Tr>
+  void start(const Tr& tr, nlohmann::json header)
+  {
+    header["format"] = "Edge_swapping_3 visit trace";
+    header["version"] = 1;
+    nlohmann::json points = nlohmann::json::array();
+    std::vector<const Point*> by_number(number_.size());
+    for(const auto& [p, k] : number_) by_number[k] = &p;
+    for(const Point* p : by_number)
+      points.push_back({CGAL::to_double(p->x()), CGAL::to_double(p->y()), CGAL::to_double(p->z())});
+    header["points"] = points;
+    header["cells"] = cells_of(tr);
+    out_ << header.dump() << '\n';
+  }
+
+  /// One line per visit.
+  template <class Tr>
+  void visit(const Tr&, const Visit_record<Tr>& r)
+  {
+    nlohmann::json line;
+    line["facet"] = {number(r.facet[0]), number(r.facet[1]), number(r.facet[2])};
+    line["apexes"] = {number(r.apexes[0]), number(r.apexes[1])};
+    line["delaunay"] = r.locally_delaunay;
+    line["kind"] = configuration_kind_name(r.kind);
+    line["cells"] = cell_list(r.cells);
+    std::vector<int> tagged(r.tagged_before.begin(), r.tagged_before.end());
+    line["tagged"] = tagged;
+    line["new_tags"] = cell_list(r.new_tags);
+    line["flip"] = r.flip < 0 ? nlohmann::json(nullptr) : nlohmann::json(flip_kind_name(Flip_kind(r.flip)));
+    line["created"] = cell_list(r.created);
+    out_ << line.dump() << '\n';
+  }
+
+  /// One line per round: its number, its swaps, and the state at its end.
+  template <class Tr, class IsTagged>
+  void end_of_round(const Tr& tr, const Cycle_record& record, const IsTagged& is_tagged)
+  {
+    nlohmann::json line;
+    line["round"] = record.cycle;
+    line["swaps"] = record.total_swaps();
+    line["new_tags"] = record.new_tags;
+    line["cells"] = cells_of(tr);
+    std::vector<std::array<std::size_t, 4>> tagged;
+    for(auto c : tr.finite_cell_handles())
+      if(is_tagged(c)) tagged.push_back(sorted_numbers(c));
+    std::sort(tagged.begin(), tagged.end());
+    line["tagged"] = tagged;
+    out_ << line.dump() << '\n';
+  }
+
+  /// The last line: how the run ended.
+  void finish(const char* ending, std::size_t rounds)
+  {
+    out_ << nlohmann::json{{"end", ending}, {"rounds", rounds}}.dump() << '\n';
+  }
+
+private:
+  struct Less_xyz
+  {
+    bool operator()(const Point& a, const Point& b) const
+    {
+      return typename CGAL::Kernel_traits<Point>::Kernel().compare_xyz_3_object()(a, b) == SMALLER;
+    }
+  };
+
+  template <class Vertex_handle>
+  std::size_t number(Vertex_handle v) const
+  {
+    const auto it = number_.find(internal::bare_point(v->point()));
+    if(it == number_.end()) throw std::invalid_argument("a trace's triangulation has a point not in its case");
+    return it->second;
+  }
+
+  template <class Cell_handle>
+  std::array<std::size_t, 4> sorted_numbers(Cell_handle c) const
+  {
+    std::array<std::size_t, 4> t{number(c->vertex(0)), number(c->vertex(1)), number(c->vertex(2)), number(c->vertex(3))};
+    std::sort(t.begin(), t.end());
+    return t;
+  }
+
+  template <class Cells>
+  nlohmann::json cell_list(const Cells& cells) const
+  {
+    nlohmann::json list = nlohmann::json::array();
+    for(const auto& t : cells) list.push_back({number(t[0]), number(t[1]), number(t[2]), number(t[3])});
+    return list;
+  }
+
+  /// The finite cells, each as its sorted point numbers, in sorted order: the state's canonical form.
+  template <class Tr>
+  std::vector<std::array<std::size_t, 4>> cells_of(const Tr& tr) const
+  {
+    std::vector<std::array<std::size_t, 4>> cells;
+    for(auto c : tr.finite_cell_handles()) cells.push_back(sorted_numbers(c));
+    std::sort(cells.begin(), cells.end());
+    return cells;
+  }
+
+  std::ostream& out_;
+  std::map<Point, std::size_t, Less_xyz> number_;
+};
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_LABORATORY_VISIT_TRACE_H

@@ -1,0 +1,561 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// An independent checker of the laboratory's traces (doc/Edge_swapping_3/traces.md).
+//
+// It shares no code with the drivers, the taxonomy or the package's
+// predicates: its triangulation is a set of cells, each the sorted numbers of
+// its four points, its tags a set of such cells, and every decision is made
+// again here from CGAL's exact kernel predicates (orientation, in-sphere) and
+// the symbolic perturbation of Devillers and Teillaud written out anew. It
+// replays a trace line by line and fails at the first line it cannot confirm:
+// a facet that is not there, a wrong configuration, a tag read or set wrongly,
+// a swap made or left out against the rule, a visit out of the fixed order, a
+// state at a round's end that differs. Under the fixed order (priority), a
+// state (cells and tags) at a round's end that comes back at a later round's
+// end, with swaps in between, certifies that the run loops forever: the order
+// and the rule are functions of that state alone.
+//
+// What it does not check: configurations with four coplanar points among the
+// five (the 2-2 and 4-4 flips; it says so and fails), and, in the storage and
+// random orders, which facet comes next (it checks that each round visits
+// listed facets at most once each).
+
+#ifndef EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
+#define EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <nlohmann/json.hpp>
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace trace_checker {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K; // exact predicates
+typedef K::Point_3 Point;
+typedef std::array<std::size_t, 4> Cell;  // sorted point numbers
+typedef std::array<std::size_t, 3> Facet; // sorted point numbers
+
+/// What a check found.
+struct Result
+{
+  bool ok = false;
+  std::string error;           ///< the first line that failed, and why
+  std::size_t visits = 0;      ///< visits confirmed
+  std::size_t rounds = 0;      ///< rounds confirmed
+  std::size_t swaps = 0;
+  std::string end;             ///< the trace's ending, confirmed
+  bool loop_certified = false; ///< priority order: a state came back
+  std::size_t loop_from = 0, loop_to = 0; ///< the state after round `loop_from` is the state after round `loop_to`
+  bool ends_on_delaunay = false; ///< the last state is CGAL's Delaunay triangulation of the points
+};
+
+struct Failure : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+inline void require(bool condition, const std::string& what)
+{
+  if(!condition) throw Failure(what);
+}
+
+// ---- the fixed order, as the format defines it ----
+
+inline std::uint64_t mix(std::uint64_t x)
+{
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+inline std::uint64_t bits(double d)
+{
+  d += 0.0; // -0 is +0
+  std::uint64_t b;
+  std::memcpy(&b, &d, 8);
+  return b;
+}
+
+inline std::uint64_t point_key(std::uint64_t seed, const Point& p)
+{
+  return mix(mix(mix(seed ^ bits(p.x())) ^ bits(p.y())) ^ bits(p.z()));
+}
+
+// ---- the state ----
+
+class Checker
+{
+public:
+  explicit Checker(const nlohmann::json& header)
+  {
+    require(header.value("format", "") == "Edge_swapping_3 visit trace" && header.value("version", 0) == 1,
+            "not a version 1 trace");
+    strategy_ = header.at("strategy").get<std::string>();
+    require(strategy_ == "helper" || strategy_ == "plain", "unknown strategy '" + strategy_ + "'");
+    order_ = header.at("order").get<std::string>();
+    require(order_ == "storage" || order_ == "random" || order_ == "priority", "unknown order '" + order_ + "'");
+    require(header.value("schedule", "") == "cycles", "only traces of the paper's cycles are checked");
+    seed_ = header.at("seed").get<std::uint64_t>();
+    max_rounds_ = header.at("max_rounds").get<std::size_t>();
+    for(const auto& p : header.at("points"))
+      points_.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
+    for(const auto& c : header.at("cells")) add_cell(cell_of(c));
+    check_start();
+    begin_round();
+  }
+
+  /// Checks one line after the header.
+  void line(const nlohmann::json& l, Result& result)
+  {
+    require(!ended_, "a line after the end");
+    if(l.contains("facet"))
+      visit(l, result);
+    else if(l.contains("round"))
+      end_round(l, result);
+    else if(l.contains("end"))
+      end(l, result);
+    else
+      throw Failure("a line that is neither a visit, a round's end nor the end");
+  }
+
+  bool ended() const { return ended_; }
+
+private:
+  // ---- geometry, exactly ----
+
+  CGAL::Orientation orientation(std::size_t a, std::size_t b, std::size_t c, std::size_t d) const
+  {
+    return CGAL::orientation(points_[a], points_[b], points_[c], points_[d]);
+  }
+
+  /// The cell's numbers in an order that is positively oriented.
+  Cell oriented(const Cell& t) const
+  {
+    Cell o = t;
+    const CGAL::Orientation s = orientation(o[0], o[1], o[2], o[3]);
+    require(s != CGAL::COPLANAR, "a flat cell");
+    if(s == CGAL::NEGATIVE) std::swap(o[0], o[1]);
+    return o;
+  }
+
+  /// Whether point e is inside the sphere of the positively oriented cell t,
+  /// ties broken as Devillers and Teillaud perturb: the points, from the
+  /// lexicographically largest down, are lifted by ever smaller amounts; the
+  /// first whose lift decides gives the side.
+  bool inside_sphere(const Cell& t, std::size_t e) const
+  {
+    const CGAL::Oriented_side s =
+      CGAL::side_of_oriented_sphere(points_[t[0]], points_[t[1]], points_[t[2]], points_[t[3]], points_[e]);
+    if(s != CGAL::ON_ORIENTED_BOUNDARY) return s == CGAL::ON_POSITIVE_SIDE;
+    std::array<std::size_t, 5> p{t[0], t[1], t[2], t[3], e};
+    std::sort(p.begin(), p.end(), [&](std::size_t a, std::size_t b) {
+      return CGAL::compare_xyz(points_[a], points_[b]) == CGAL::LARGER;
+    });
+    for(std::size_t q : p)
+    {
+      if(q == e) return false; // the query's own lift puts it outside
+      Cell r = t;
+      for(auto& v : r)
+        if(v == q) v = e;
+      const CGAL::Orientation o = orientation(r[0], r[1], r[2], r[3]);
+      if(o != CGAL::COPLANAR) return o == CGAL::POSITIVE;
+    }
+    throw Failure("the perturbation did not decide (five coplanar points)");
+  }
+
+  // ---- combinatorics ----
+
+  static Cell sorted(Cell t)
+  {
+    std::sort(t.begin(), t.end());
+    return t;
+  }
+
+  Cell cell_of(const nlohmann::json& c) const
+  {
+    require(c.is_array() && c.size() == 4, "a cell is four point numbers");
+    Cell t;
+    for(int k = 0; k < 4; ++k)
+    {
+      t[k] = c.at(k).get<std::size_t>();
+      require(t[k] < points_.size(), "a point number out of range");
+    }
+    t = sorted(t);
+    require(t[0] != t[1] && t[1] != t[2] && t[2] != t[3], "a cell with a repeated point");
+    return t;
+  }
+
+  std::set<Cell> cell_set(const nlohmann::json& list) const
+  {
+    std::set<Cell> s;
+    for(const auto& c : list) require(s.insert(cell_of(c)).second, "a cell listed twice");
+    return s;
+  }
+
+  static std::array<Facet, 4> facets_of(const Cell& t)
+  {
+    return {Facet{t[1], t[2], t[3]}, Facet{t[0], t[2], t[3]}, Facet{t[0], t[1], t[3]}, Facet{t[0], t[1], t[2]}};
+  }
+
+  static std::size_t apex(const Cell& t, const Facet& f)
+  {
+    for(std::size_t v : t)
+      if(v != f[0] && v != f[1] && v != f[2]) return v;
+    throw Failure("a cell without the apex of its facet");
+  }
+
+  void add_cell(const Cell& t)
+  {
+    require(cells_.insert(t).second, "a cell made twice");
+    for(const Facet& f : facets_of(t))
+    {
+      auto& holders = facets_[f];
+      require(holders.size() < 2, "a facet in three cells");
+      holders.push_back(t);
+    }
+  }
+
+  void remove_cell(const Cell& t)
+  {
+    require(cells_.erase(t) == 1, "a cell removed that is not there");
+    tags_.erase(t);
+    for(const Facet& f : facets_of(t))
+    {
+      auto& holders = facets_[f];
+      holders.erase(std::find(holders.begin(), holders.end(), t));
+      if(holders.empty()) facets_.erase(f);
+    }
+  }
+
+  bool is_interior(const Facet& f) const
+  {
+    const auto it = facets_.find(f);
+    return it != facets_.end() && it->second.size() == 2;
+  }
+
+  /// The start is a triangulation of the points' convex hull: no flat cell,
+  /// each facet in at most two cells with their apexes on opposite sides, and
+  /// the cells' volumes add up to the hull's.
+  void check_start() const
+  {
+    typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+    CGAL::Cartesian_converter<K, EK> to_exact;
+    EK::FT volume = 0;
+    for(const Cell& t : cells_)
+    {
+      const Cell o = oriented(t);
+      volume += CGAL::volume(to_exact(points_[o[0]]), to_exact(points_[o[1]]), to_exact(points_[o[2]]),
+                             to_exact(points_[o[3]]));
+    }
+    for(const auto& [f, holders] : facets_)
+      if(holders.size() == 2)
+        require(orientation(f[0], f[1], f[2], apex(holders[0], f)) == -orientation(f[0], f[1], f[2], apex(holders[1], f)),
+                "two cells on the same side of a facet in the start");
+    CGAL::Delaunay_triangulation_3<EK> hull;
+    for(const Point& p : points_) hull.insert(to_exact(p));
+    EK::FT hull_volume = 0;
+    for(auto c : hull.finite_cell_handles()) hull_volume += hull.tetrahedron(c).volume();
+    require(volume == hull_volume, "the start's cells do not fill the convex hull once");
+  }
+
+  // ---- rounds and the fixed order ----
+
+  void begin_round()
+  {
+    listed_.clear();
+    for(const auto& [f, holders] : facets_)
+      if(holders.size() == 2) listed_.push_back(f);
+    if(order_ == "priority")
+    {
+      auto key = [&](const Facet& f) {
+        return mix(point_key(seed_, points_[f[0]]) + point_key(seed_, points_[f[1]]) + point_key(seed_, points_[f[2]]));
+      };
+      auto by_points = [&](const Facet& f) {
+        std::array<std::size_t, 3> s = f;
+        std::sort(s.begin(), s.end(), [&](std::size_t a, std::size_t b) {
+          return CGAL::compare_xyz(points_[a], points_[b]) == CGAL::SMALLER;
+        });
+        return s;
+      };
+      std::sort(listed_.begin(), listed_.end(), [&](const Facet& a, const Facet& b) {
+        const std::uint64_t ka = key(a), kb = key(b);
+        if(ka != kb) return ka < kb;
+        const auto pa = by_points(a), pb = by_points(b);
+        for(int k = 0; k < 3; ++k)
+          if(pa[k] != pb[k]) return CGAL::compare_xyz(points_[pa[k]], points_[pb[k]]) == CGAL::SMALLER;
+        return false;
+      });
+    }
+    listed_set_ = std::set<Facet>(listed_.begin(), listed_.end());
+    next_ = 0;
+    visited_.clear();
+    round_swaps_ = 0;
+    round_tags_ = 0;
+  }
+
+  /// Priority order: the next listed facet that exists now must be `f`.
+  void check_turn(const Facet& f)
+  {
+    if(order_ != "priority")
+    {
+      require(listed_set_.count(f) == 1, "a facet visited that was not there when the round began");
+      require(visited_.insert(f).second, "a facet visited twice in one round");
+      return;
+    }
+    while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
+    require(next_ < listed_.size() && listed_[next_] == f, "a visit out of the fixed order");
+    ++next_;
+  }
+
+  // ---- a visit ----
+
+  void visit(const nlohmann::json& l, Result& result)
+  {
+    Facet f;
+    for(int k = 0; k < 3; ++k) f[k] = l.at("facet").at(k).get<std::size_t>();
+    std::sort(f.begin(), f.end());
+    require(is_interior(f), "a visited facet that is not an interior facet now");
+    check_turn(f);
+    const auto& holders = facets_.at(f);
+    const std::size_t d = l.at("apexes").at(0).get<std::size_t>(), e = l.at("apexes").at(1).get<std::size_t>();
+    const std::size_t h0 = apex(holders[0], f), h1 = apex(holders[1], f);
+    require((d == h0 && e == h1) || (d == h1 && e == h0), "the apexes are not those of the facet's cells");
+    const Cell cd = sorted({f[0], f[1], f[2], d});
+
+    // Locally Delaunay: e outside the (perturbed) sphere of the cell with d.
+    const bool delaunay = !inside_sphere(oriented(cd), e);
+    require(l.at("delaunay").get<bool>() == delaunay, "the in-sphere test says otherwise");
+
+    // The cells made of the five points.
+    const std::array<std::size_t, 5> five{f[0], f[1], f[2], d, e};
+    std::set<Cell> five_cells;
+    for(int skip = 0; skip < 5; ++skip)
+    {
+      Cell t;
+      int m = 0;
+      for(int k = 0; k < 5; ++k)
+        if(k != skip) t[m++] = five[k];
+      t = sorted(t);
+      if(cells_.count(t)) five_cells.insert(t);
+    }
+    require(cell_set(l.at("cells")) == five_cells, "the cells of the five points are not these");
+    const auto& tagged_list = l.at("tagged");
+    require(tagged_list.size() == l.at("cells").size(), "a tag flag per cell");
+    for(std::size_t k = 0; k < tagged_list.size(); ++k)
+      require((tagged_list.at(k).get<int>() != 0) == (tags_.count(cell_of(l.at("cells").at(k))) == 1),
+              "a tag read wrongly");
+
+    // The configuration: the signs of e's barycentric coordinates in the cell with d.
+    const Cell o = oriented(cd);
+    int positive = 0, negative = 0;
+    std::size_t negative_vertex = 0;
+    for(std::size_t v : f)
+    {
+      Cell r = o;
+      for(auto& w : r)
+        if(w == v) w = e;
+      const CGAL::Orientation s = orientation(r[0], r[1], r[2], r[3]);
+      require(s != CGAL::COPLANAR, "four coplanar points among the five: not checked here (2-2 and 4-4)");
+      if(s == CGAL::POSITIVE) ++positive;
+      else
+      {
+        ++negative;
+        negative_vertex = v;
+      }
+    }
+    std::string kind;
+    std::vector<Cell> old_cells, new_cells;
+    if(positive == 3)
+    {
+      kind = "two tetrahedra convex";
+      old_cells = {cd, sorted({f[0], f[1], f[2], e})};
+      for(std::size_t v : f)
+      {
+        Cell t = cd;
+        for(auto& w : t)
+          if(w == v) w = e;
+        new_cells.push_back(sorted(t));
+      }
+    }
+    else if(positive == 2)
+    {
+      // Concave at the edge (x, y) opposite the negative vertex z; a 3-2 flip if (x, y, d, e) is a cell.
+      std::array<std::size_t, 2> xy;
+      int m = 0;
+      for(std::size_t v : f)
+        if(v != negative_vertex) xy[m++] = v;
+      const Cell third = sorted({xy[0], xy[1], d, e});
+      kind = "concave";
+      if(cells_.count(third))
+      {
+        kind = "three tetrahedra convex";
+        old_cells = {cd, sorted({f[0], f[1], f[2], e}), third};
+        new_cells = {sorted({xy[0], negative_vertex, d, e}), sorted({xy[1], negative_vertex, d, e})};
+      }
+    }
+    else
+      kind = five_cells.size() == 4 ? "four tetrahedra" : "concave";
+    require(l.at("kind").get<std::string>() == kind, "the configuration is " + kind);
+
+    // The rule.
+    std::set<Cell> new_tags;
+    bool swap = false;
+    if(strategy_ == "plain")
+      swap = !delaunay && !old_cells.empty();
+    else
+    {
+      // The package's reading: a Delaunay facet whose two cells are untagged is passed over.
+      const bool passed_over = delaunay && !tags_.count(cd) && !tags_.count(sorted({f[0], f[1], f[2], e}));
+      if(!passed_over)
+      {
+        if(!delaunay)
+          for(const Cell& t : five_cells)
+            if(!tags_.count(t)) new_tags.insert(t);
+        for(const Cell& t : old_cells)
+          if(tags_.count(t) || new_tags.count(t)) swap = true;
+      }
+    }
+    require(cell_set(l.at("new_tags")) == new_tags, "the tags set are not those the rule sets");
+    tags_.insert(new_tags.begin(), new_tags.end());
+    round_tags_ += new_tags.size();
+    const auto& flip = l.at("flip");
+    if(!swap)
+    {
+      require(flip.is_null() && l.at("created").empty(), "a swap the rule does not make");
+      ++result.visits;
+      return;
+    }
+    require(!flip.is_null(), "a swap the rule makes is missing");
+    require(flip.get<std::string>() == (old_cells.size() == 2 ? "2-3" : "3-2"), "the wrong flip");
+    const std::set<Cell> made(new_cells.begin(), new_cells.end());
+    require(cell_set(l.at("created")) == made, "the flip made other cells");
+    for(const Cell& t : old_cells) remove_cell(t);
+    for(const Cell& t : new_cells)
+    {
+      oriented(t); // not flat
+      add_cell(t);
+    }
+    ++round_swaps_;
+    ++result.swaps;
+    ++result.visits;
+  }
+
+  // ---- a round's end, and the end ----
+
+  void end_round(const nlohmann::json& l, Result& result)
+  {
+    const std::size_t round = l.at("round").get<std::size_t>();
+    require(round == result.rounds + 1, "rounds out of sequence");
+    if(order_ == "priority")
+    {
+      while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
+      require(next_ == listed_.size(), "the round ended before a listed facet that is still there was visited");
+    }
+    require(l.at("swaps").get<std::size_t>() == round_swaps_, "the round's swap count is wrong");
+    require(l.at("new_tags").get<std::size_t>() == round_tags_, "the round's count of new tags is wrong");
+    require(cell_set(l.at("cells")) == cells_, "the cells at the round's end differ");
+    require(cell_set(l.at("tagged")) == tags_, "the tags at the round's end differ");
+    result.rounds = round;
+    last_round_idle_ = round_swaps_ == 0 && round_tags_ == 0;
+    if(order_ == "priority" && !result.loop_certified)
+    {
+      const auto state = std::make_pair(cells_, tags_);
+      const auto it = seen_.find(state);
+      if(it != seen_.end() && !last_round_idle_)
+      {
+        result.loop_certified = true;
+        result.loop_from = it->second;
+        result.loop_to = round;
+      }
+      else
+        seen_.emplace(state, round);
+    }
+    begin_round();
+  }
+
+  bool all_delaunay() const
+  {
+    for(const auto& [f, holders] : facets_)
+      if(holders.size() == 2 && inside_sphere(oriented(holders[0]), apex(holders[1], f))) return false;
+    return true;
+  }
+
+  void end(const nlohmann::json& l, Result& result)
+  {
+    const std::string ending = l.at("end").get<std::string>();
+    require(l.at("rounds").get<std::size_t>() == result.rounds, "the end counts other rounds");
+    const bool delaunay = all_delaunay();
+    if(ending == "converged")
+      require(last_round_idle_ && delaunay, "'converged' but the last round changed something or a facet is not Delaunay");
+    else if(ending == "stuck")
+      require(last_round_idle_ && !delaunay, "'stuck' but the last round changed something or every facet is Delaunay");
+    else if(ending == "cycle limit reached")
+      require(result.rounds == max_rounds_ && !last_round_idle_, "the round limit was not reached");
+    else
+      throw Failure("unknown ending '" + ending + "'");
+    result.end = ending;
+    // The last state against CGAL's Delaunay triangulation, cell for cell.
+    CGAL::Delaunay_triangulation_3<K> dt(points_.begin(), points_.end());
+    std::map<Point, std::size_t> number;
+    for(std::size_t k = 0; k < points_.size(); ++k) number.emplace(points_[k], k);
+    std::set<Cell> delaunay_cells;
+    for(auto c : dt.finite_cell_handles())
+      delaunay_cells.insert(sorted({number.at(c->vertex(0)->point()), number.at(c->vertex(1)->point()),
+                                    number.at(c->vertex(2)->point()), number.at(c->vertex(3)->point())}));
+    result.ends_on_delaunay = delaunay_cells == cells_;
+    ended_ = true;
+  }
+
+  std::string strategy_, order_;
+  std::uint64_t seed_ = 0;
+  std::size_t max_rounds_ = 0;
+  std::vector<Point> points_;
+  std::set<Cell> cells_, tags_;
+  std::map<Facet, std::vector<Cell>> facets_;
+  std::vector<Facet> listed_;
+  std::set<Facet> listed_set_, visited_;
+  std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
+  bool last_round_idle_ = false, ended_ = false;
+  std::map<std::pair<std::set<Cell>, std::set<Cell>>, std::size_t> seen_;
+};
+
+/// Checks the trace read from `in`, line by line.
+inline Result check_trace(std::istream& in)
+{
+  Result result;
+  std::string text;
+  std::size_t number = 0;
+  try
+  {
+    require(bool(std::getline(in, text)), "an empty trace");
+    ++number;
+    Checker checker(nlohmann::json::parse(text));
+    while(std::getline(in, text))
+    {
+      ++number;
+      checker.line(nlohmann::json::parse(text), result);
+    }
+    require(checker.ended(), "the trace has no end line");
+    result.ok = true;
+  }
+  catch(const std::exception& e) // Failure, and JSON that is not what the format says
+  {
+    result.ok = false;
+    result.error = "line " + std::to_string(number) + ": " + e.what();
+  }
+  return result;
+}
+
+} // namespace trace_checker
+
+#endif // EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
