@@ -1,21 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Experiment (not a test): from every fine triangulation of a case's points
 // (TOPCOM), the helper strategy in the fixed face order (PRIORITY_ORDER) for
-// each seed; how many starts have not converged by the cycle limit.
+// each seed; how many starts are still swapping at the cycle limit, and how
+// many end stuck (possible in the readings that end on a cycle without swaps).
 //
 //   experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING]
 //
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
 // "cleared-each-cycle,any-tetrahedron,no-swap"; the default is the package's.
 //
-// A start counted here can be written as a case and its trace certified:
-// doc/Edge_swapping_3/traces.md.
+// Every run that does not end on CGAL's Delaunay triangulation is traced and
+// replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
+// which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include "trace_checker.h"
 #include <iostream>
+#include <sstream>
 #include <string>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -41,22 +45,38 @@ int main(int argc, char** argv)
     return 2;
   }
   std::cout << "reading " << ES::helper_reading_name(c.reading) << '\n';
+  std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
   for(unsigned seed = 1; seed <= std::stoul(argv[2]); ++seed)
   {
-    std::size_t not_converged = 0;
+    std::size_t limit = 0, stuck = 0, certified = 0;
     long long first = -1;
     for(std::size_t t = 0; t < all.triangulations.size(); ++t)
     {
       c.cells = ES::oriented_cells(c.points, all.triangulations[t]);
       c.seed = seed;
-      if(!ES::run_conjecture_case(c).equal_to_cgal)
+      const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
+      ++runs;
+      if(o.equal_to_cgal) continue;
+      (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
+      if(first < 0) first = (long long)t;
+      // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
+      std::stringstream trace;
+      ES::trace_conjecture_case(c, trace);
+      const trace_checker::Result r = trace_checker::check_trace(trace);
+      if(!r.ok)
       {
-        ++not_converged;
-        if(first < 0) first = (long long)t;
+        std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
+        return 1;
       }
+      certified += r.loop_certified;
     }
-    std::cout << "seed " << seed << ": " << not_converged << " starts not converged by cycle " << c.max_cycles
-              << " (first: triangulation " << first << ")\n";
+    all_limit += limit;
+    all_stuck += stuck;
+    all_certified += certified;
+    std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << c.max_cycles << " ("
+              << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
   }
+  std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
+            << " loops certified by the checker), " << all_stuck << " stuck\n";
   return 0;
 }

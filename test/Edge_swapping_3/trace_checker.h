@@ -106,6 +106,18 @@ public:
     require(order_ == "storage" || order_ == "random" || order_ == "priority", "unknown order '" + order_ + "'");
     require(header.value("schedule", "") == "cycles", "only traces of the paper's cycles are checked");
     seed_ = header.at("seed").get<std::uint64_t>();
+    // The reading of Algorithm 4: tag lifetime, swap condition, ending (traces.md).
+    const std::string reading = header.at("reading").get<std::string>();
+    const auto first = reading.find(','), second = reading.rfind(',');
+    require(first != std::string::npos && second != first, "a reading is three names");
+    const std::string lifetime = reading.substr(0, first), condition = reading.substr(first + 1, second - first - 1),
+                      ending = reading.substr(second + 1);
+    require(lifetime == "until-destroyed" || lifetime == "cleared-each-cycle", "unknown tag lifetime");
+    require(condition == "pass-over" || condition == "any-tetrahedron", "unknown swap condition");
+    require(ending == "no-swap-no-tag" || ending == "no-swap", "unknown ending rule");
+    clear_tags_each_cycle_ = lifetime == "cleared-each-cycle";
+    pass_over_ = condition == "pass-over";
+    end_without_swap_ = ending == "no-swap";
     max_rounds_ = header.at("max_rounds").get<std::size_t>();
     for(const auto& p : header.at("points"))
       points_.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
@@ -272,6 +284,7 @@ private:
 
   void begin_round()
   {
+    if(clear_tags_each_cycle_) tags_.clear();
     listed_.clear();
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2) listed_.push_back(f);
@@ -415,7 +428,7 @@ private:
     else
     {
       // The package's reading: a Delaunay facet whose two cells are untagged is passed over.
-      const bool passed_over = delaunay && !tags_.count(cd) && !tags_.count(sorted({f[0], f[1], f[2], e}));
+      const bool passed_over = pass_over_ && delaunay && !tags_.count(cd) && !tags_.count(sorted({f[0], f[1], f[2], e}));
       if(!passed_over)
       {
         if(!delaunay)
@@ -466,7 +479,7 @@ private:
     require(cell_set(l.at("cells")) == cells_, "the cells at the round's end differ");
     require(cell_set(l.at("tagged")) == tags_, "the tags at the round's end differ");
     result.rounds = round;
-    last_round_idle_ = round_swaps_ == 0 && round_tags_ == 0;
+    last_round_idle_ = round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_);
     if(order_ == "priority" && !result.loop_certified)
     {
       const auto state = std::make_pair(cells_, tags_);
@@ -526,6 +539,7 @@ private:
   std::set<Facet> listed_set_, visited_;
   std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
   bool last_round_idle_ = false, ended_ = false;
+  bool clear_tags_each_cycle_ = false, pass_over_ = true, end_without_swap_ = false;
   std::map<std::pair<std::set<Cell>, std::set<Cell>>, std::size_t> seen_;
 };
 

@@ -35,6 +35,7 @@ enum new_vertex_visitor_t { new_vertex_visitor };
 enum round_visitor_t { round_visitor };
 enum number_of_threads_t { number_of_threads };
 enum visit_visitor_t { visit_visitor };
+enum helper_reading_t { helper_reading };
 
 } // namespace internal_np
 
@@ -68,6 +69,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(cycle_visitor)
 /// every visit of a facet with a `Visit_record` and after every round: the
 /// traces of the laboratory. Copied, like `visitor`: pass `std::ref`.
 CGAL_EDGE_SWAPPING_3_PARAMETER(visit_visitor)
+/// `Helper_reading`: the reading of Algorithm 4 (default: the package's);
+/// another reading needs `schedule(PAPER_CYCLES)`.
+CGAL_EDGE_SWAPPING_3_PARAMETER(helper_reading)
 /// A model of `MeshConstraints_3` (default `No_constraints`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(mesh_constraints)
 /// `bool`: whether `swap_edges` with the Delaunay criterion goes on from a

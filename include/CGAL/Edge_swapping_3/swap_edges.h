@@ -41,6 +41,7 @@ Driver_settings driver_settings(const NamedParameters& np, Face_order default_or
   s.perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
   s.cycle_visitor = choose_parameter(get_parameter(np, internal_np::cycle_visitor),
                                      std::function<void(const Cycle_record&)>());
+  s.reading = choose_parameter(get_parameter(np, internal_np::helper_reading), Helper_reading());
   return s;
 }
 
@@ -80,6 +81,8 @@ struct Criterion_rule
 /// configuration with a tagged tetrahedron is swapped, Delaunay or not.
 struct Helper_rule
 {
+  bool pass_over = true; // Helper_reading::swap_condition
+
   template <class Driver, class Cell_handle>
   void operator()(Driver& d, Cell_handle c, int i) const
   {
@@ -88,7 +91,7 @@ struct Helper_rule
     // swappable configuration with a tagged cell is also reached through a
     // facet of that cell, so no help is lost, only deferred.
     const bool delaunay = is_locally_delaunay(tr, c, i, d.perturbation());
-    if(delaunay && !d.is_tagged(c) && !d.is_tagged(c->neighbor(i))) return;
+    if(pass_over && delaunay && !d.is_tagged(c) && !d.is_tagged(c->neighbor(i))) return;
     const auto conf = classify_facet(tr, c, i);
     if(!delaunay)
       for(int k = 0; k < conf.number_of_tetrahedra(); ++k) d.tag(conf.tetrahedron(k));
@@ -139,7 +142,10 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& cons
                 "the helper strategy is for Delaunay triangulations of bare points");
   return with_driver(tr, s, constraints, np, [&](auto& driver) {
     if(s.schedule == WORK_QUEUE) driver.seed(seeds);
-    Helper_rule rule;
+    if(s.schedule == WORK_QUEUE && !s.reading.is_default())
+      throw std::invalid_argument("Edge_swapping_3: the readings of Algorithm 4 other than the package's run on the "
+                                  "paper's cycles (schedule PAPER_CYCLES)");
+    Helper_rule rule{s.reading.swap_condition == PASS_OVER_UNTAGGED_DELAUNAY_FACETS};
     Swap_report report = driver.run(rule);
     decide_delaunay_ending(report, driver, s);
     return report;

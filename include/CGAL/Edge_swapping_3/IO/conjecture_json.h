@@ -55,6 +55,7 @@ nlohmann::json conjecture_case_json(const Conjecture_case<Point>& c)
                       {"seed", c.seed},
                       {"max_cycles", c.max_cycles}};
   if(c.start == GIVEN_CELLS_START) j["cells"] = c.cells;
+  if(!c.reading.is_default()) j["reading"] = helper_reading_name(c.reading);
   return j;
 }
 
@@ -92,6 +93,8 @@ Conjecture_case<Point> conjecture_case_from_json(const nlohmann::json& j, const 
   if(!conjecture_strategy_from_name(strategy, c.strategy))
     fail("unknown strategy '" + strategy + "' (plain, helper, insertion)");
   if(!face_order_from_name(order, c.order)) fail("unknown order '" + order + "' (storage, random, priority)");
+  if(j.contains("reading") && !helper_reading_from_name(text("reading"), c.reading))
+    fail("unknown reading '" + text("reading") + "' (doc/Edge_swapping_3/traces.md)");
   const std::string problem = point_set_problem(c.points);
   if(!problem.empty()) fail(problem);
   if(start.rfind("scramble:", 0) == 0)

@@ -15,6 +15,7 @@
 #include <CGAL/Triangulation_3.h>
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
+#include <CGAL/Edge_swapping_3/Helper_reading.h>
 #include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
@@ -61,6 +62,7 @@ struct Conjecture_case
   Face_order order = RANDOM_ORDER;               ///< the face order of every cycle
   unsigned seed = 1;                             ///< of the face order and the scrambling flips
   std::size_t max_cycles = 1000;                 ///< the cycle limit of each run
+  Helper_reading reading;                        ///< the helper strategy's reading of Algorithm 4
 };
 
 /// \ingroup PkgEdgeSwapping3Laboratory
@@ -174,8 +176,9 @@ auto laboratory_swap_parameters(const Conjecture_case<Point>& c)
 {
   namespace np = Edge_swapping_3::parameters;
   return np::schedule(PAPER_CYCLES,
-                      np::face_order(c.order, np::delaunay_repair(false, CGAL::parameters::random_seed(c.seed)
-                                                                           .number_of_iterations(c.max_cycles))));
+                      np::face_order(c.order, np::helper_reading(c.reading,
+                                                                 np::delaunay_repair(false, CGAL::parameters::random_seed(c.seed)
+                                                                           .number_of_iterations(c.max_cycles)))));
 }
 
 inline void add_swap_report(Conjecture_outcome& o, const Swap_report& r)
@@ -260,6 +263,7 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c, Visit_tr
                         {"schedule", "cycles"},
                         {"order", face_order_name(c.order)},
                         {"seed", c.seed},
+                        {"reading", helper_reading_name(c.reading)},
                         {"max_rounds", c.max_cycles}});
       r = run(parameters::visit_visitor(std::ref(*trace), settings));
       trace->finish(swap_ending_name(r.ending), r.number_of_cycles());

@@ -20,6 +20,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Helper_reading.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/Visit_record.h>
 #include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
@@ -52,6 +53,7 @@ struct Driver_settings
   bool record_non_delaunay_facets = false;
   Perturbation perturbation = CGAL_PERTURBATION;
   std::function<void(const Cycle_record&)> cycle_visitor;
+  Helper_reading reading; // the helper's, on the paper's cycles
 };
 
 /// A visitor given by value or through `std::ref`.
@@ -769,6 +771,11 @@ private:
     {
       record_ = Cycle_record();
       record_.cycle = round;
+      if(settings_.reading.tag_lifetime == TAGS_CLEARED_EACH_CYCLE && any_tag_)
+      {
+        for(State& s : state_) s &= State(~TAGGED);
+        any_tag_ = false;
+      }
       for(Cell_handle c : tr_.finite_cell_handles())
         for(int i = 0; i < 4; ++i)
           if(holds_facet(tr_, c, i))
@@ -815,8 +822,9 @@ private:
       entry_of_ = {};
       made_again_ = {};
       end_round(report);
-      // A round that tagged a cell changed what the next would do.
-      if(record_.total_swaps() == 0 && record_.new_tags == 0)
+      // A round that tagged a cell changed what the next would do (unless the
+      // reading ends on the first cycle without a swap).
+      if(record_.total_swaps() == 0 && (record_.new_tags == 0 || settings_.reading.cycle_ending == NO_SWAP))
       {
         report.ending = CONVERGED;
         break;

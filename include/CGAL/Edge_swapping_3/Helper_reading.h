@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The readings of Algorithm 4 (the helper strategy) where the paper leaves a
+// choice open, as options of the paper's cycles: how long a tag lasts, which
+// visits may make a helper swap, and when the cycles end. The default is the
+// package's reading; doc/Edge_swapping_3/traces.md quotes the sentence of the
+// paper each option interprets.
+
+#ifndef CGAL_EDGE_SWAPPING_3_HELPER_READING_H
+#define CGAL_EDGE_SWAPPING_3_HELPER_READING_H
+
+#include <string>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// How long a tag of Algorithm 4 lasts.
+enum Tag_lifetime
+{
+  TAGS_UNTIL_CELL_DESTROYED, ///< a tag goes with its tetrahedron (the default)
+  TAGS_CLEARED_EACH_CYCLE    ///< every tag is cleared when a cycle begins
+};
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// Which visits may make a helper swap.
+enum Helper_swap_condition
+{
+  /// A Delaunay facet whose two cells are untagged is passed over: a swap it
+  /// would make waits for a visit of a facet of the tagged cell (the default).
+  PASS_OVER_UNTAGGED_DELAUNAY_FACETS,
+  /// As Algorithm 4 is written: every visit swaps a convex configuration with a tag on any of its tetrahedra.
+  TAG_ON_ANY_TETRAHEDRON
+};
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// When the paper's cycles end.
+enum Cycle_ending
+{
+  NO_SWAP_AND_NO_NEW_TAG, ///< after a cycle with no swap and no new tag (the default)
+  NO_SWAP                 ///< after a cycle with no swap, as Algorithm 3's loop is written
+};
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// One reading of Algorithm 4 (named parameter `helper_reading`; the paper's cycles only).
+struct Helper_reading
+{
+  Tag_lifetime tag_lifetime = TAGS_UNTIL_CELL_DESTROYED;
+  Helper_swap_condition swap_condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS;
+  Cycle_ending cycle_ending = NO_SWAP_AND_NO_NEW_TAG;
+
+  /// Whether this is the package's reading, the one the work queue runs.
+  bool is_default() const
+  {
+    return tag_lifetime == TAGS_UNTIL_CELL_DESTROYED && swap_condition == PASS_OVER_UNTAGGED_DELAUNAY_FACETS &&
+           cycle_ending == NO_SWAP_AND_NO_NEW_TAG;
+  }
+};
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// The names of the options in files: "until-destroyed" or "cleared-each-cycle".
+inline const char* tag_lifetime_name(Tag_lifetime t)
+{
+  return t == TAGS_UNTIL_CELL_DESTROYED ? "until-destroyed" : "cleared-each-cycle";
+}
+/// \ingroup PkgEdgeSwapping3Reports
+/// "pass-over" or "any-tetrahedron".
+inline const char* helper_swap_condition_name(Helper_swap_condition c)
+{
+  return c == PASS_OVER_UNTAGGED_DELAUNAY_FACETS ? "pass-over" : "any-tetrahedron";
+}
+/// \ingroup PkgEdgeSwapping3Reports
+/// "no-swap-no-tag" or "no-swap".
+inline const char* cycle_ending_name(Cycle_ending e) { return e == NO_SWAP_AND_NO_NEW_TAG ? "no-swap-no-tag" : "no-swap"; }
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// The reading's name: its three option names joined by commas.
+inline std::string helper_reading_name(const Helper_reading& r)
+{
+  return std::string(tag_lifetime_name(r.tag_lifetime)) + "," + helper_swap_condition_name(r.swap_condition) + "," +
+         cycle_ending_name(r.cycle_ending);
+}
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// The reading named `name` (as `helper_reading_name` writes it) in `r`; false for another name.
+inline bool helper_reading_from_name(const std::string& name, Helper_reading& r)
+{
+  for(Tag_lifetime t : {TAGS_UNTIL_CELL_DESTROYED, TAGS_CLEARED_EACH_CYCLE})
+    for(Helper_swap_condition c : {PASS_OVER_UNTAGGED_DELAUNAY_FACETS, TAG_ON_ANY_TETRAHEDRON})
+      for(Cycle_ending e : {NO_SWAP_AND_NO_NEW_TAG, NO_SWAP})
+      {
+        const Helper_reading candidate{t, c, e};
+        if(helper_reading_name(candidate) == name)
+        {
+          r = candidate;
+          return true;
+        }
+      }
+  return false;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_HELPER_READING_H
