@@ -6,6 +6,9 @@
 //
 //   experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING]
 //
+// CASE is a case file (its points are used), or random-integer:N:SET for the
+// laboratory's N random integer points of set SET.
+//
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
 // "cleared-each-cycle,any-tetrahedron,no-swap"; the default is the package's.
 //
@@ -17,6 +20,7 @@
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/point_families.h>
 #include "trace_checker.h"
 #include <iostream>
 #include <sstream>
@@ -32,7 +36,16 @@ int main(int argc, char** argv)
     std::cerr << "usage: experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING]\n";
     return 2;
   }
-  auto c = ES::IO::read_conjecture_case_file<K::Point_3>(argv[1]);
+  ES::Conjecture_case<K::Point_3> c;
+  const std::string source = argv[1];
+  if(source.rfind("random-integer:", 0) == 0)
+  {
+    const auto colon = source.find(':', 15);
+    c.points = ES::point_families::random_integer<K::Point_3>(std::stoul(source.substr(15, colon - 15)),
+                                                              unsigned(std::stoul(source.substr(colon + 1))));
+  }
+  else
+    c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
   const auto all = ES::IO::topcom_triangulations(c.points, 1000000);
   std::cout << c.points.size() << " points, " << all.triangulations.size() << " triangulations\n";
   c.strategy = ES::HELPER_STRATEGY;

@@ -501,7 +501,7 @@ TEST_CASE("Traces: the independent checker confirms every visit of plain and hel
   }
 }
 
-TEST_CASE("A loop of the helper strategy under a fixed face order, 8 points, certified by the independent checker",
+TEST_CASE("Loops of the helper strategy under a fixed face order, 8 and 6 points, certified by the independent checker",
           "[conjectures][traces]")
 {
   // TOPCOM's triangulation 2 of the 8-point set, priority order seed 16: the
@@ -521,6 +521,18 @@ TEST_CASE("A loop of the helper strategy under a fixed face order, 8 points, cer
   REQUIRE(r.loop_to == 4);
   REQUIRE(r.end == "cycle limit reached");
   REQUIRE_FALSE(r.ends_on_delaunay);
+
+  // The smallest loop found (traces.md): 6 random integer points (set 1), TOPCOM's triangulation 0, seed 17.
+  const auto six = load_case("helper_priority_loop_6_points.json");
+  std::ostringstream six_trace;
+  REQUIRE(ES::trace_conjecture_case(six, six_trace).ending == ES::CYCLE_LIMIT_REACHED);
+  REQUIRE(six_trace.str() ==
+          test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_6_points.trace.jsonl"));
+  const auto r6 = check_text(six_trace.str());
+  REQUIRE(r6.ok);
+  REQUIRE(r6.loop_certified);
+  REQUIRE(r6.loop_from == 1);
+  REQUIRE(r6.loop_to == 3);
 
   // A reading is kept in the case file; an unknown one is refused by name; the
   // work queue runs the package's reading only.

@@ -44,9 +44,9 @@ enum Cycle_ending
 /// One reading of Algorithm 4 (named parameter `helper_reading`; the paper's cycles only).
 struct Helper_reading
 {
-  Tag_lifetime tag_lifetime = TAGS_UNTIL_CELL_DESTROYED;
-  Helper_swap_condition swap_condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS;
-  Cycle_ending cycle_ending = NO_SWAP_AND_NO_NEW_TAG;
+  Tag_lifetime tag_lifetime = TAGS_UNTIL_CELL_DESTROYED;                    ///< how long a tag lasts
+  Helper_swap_condition swap_condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS; ///< which visits may swap
+  Cycle_ending cycle_ending = NO_SWAP_AND_NO_NEW_TAG;                        ///< when the cycles end
 
   /// Whether this is the package's reading, the one the work queue runs.
   bool is_default() const

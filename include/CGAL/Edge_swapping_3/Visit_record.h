@@ -20,7 +20,7 @@ namespace Edge_swapping_3 {
 template <class Tr>
 struct Visit_record
 {
-  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;  ///< the triangulation's vertex handle
   typedef std::array<Vertex_handle, 4> Cell_vertices; ///< a cell's vertices, in the cell's order
 
   std::array<Vertex_handle, 3> facet;  ///< the facet's vertices, seen from `cells[0]`
