@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Experiment (not a test): escape times of the helper strategy in random
+// order. One point set and one start, the face order drawn anew each cycle
+// from seeds FIRST to LAST; one JSON line per seed with the cycle at which the
+// run ended (or the limit), its ending, and whether it is CGAL's triangulation.
+//
+//   experiment_escape_times SOURCE FIRST LAST MAX_CYCLES [THREADS]
+//
+// SOURCE is a case file (its points and start are used), or FAMILY:N:SET for
+// the laboratory's point family FAMILY with N points drawn from SET and a
+// placing start. Runs are spread over THREADS threads (default 2); the lines
+// come in seed order. doc/Edge_swapping_3/conjectures.md plots them
+// (plot_escape_times.py).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/point_families.h>
+#include <atomic>
+#include <iostream>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+namespace ES = CGAL::Edge_swapping_3;
+
+int main(int argc, char** argv)
+{
+  if(argc != 5 && argc != 6)
+  {
+    std::cerr << "usage: experiment_escape_times SOURCE FIRST LAST MAX_CYCLES [THREADS]\n";
+    return 2;
+  }
+  ES::Conjecture_case<K::Point_3> c;
+  const std::string source = argv[1];
+  const auto colon = source.find(':');
+  if(colon != std::string::npos && source.find(".json") == std::string::npos)
+  {
+    const auto second = source.find(':', colon + 1);
+    c.points = ES::make_point_family<K::Point_3>(source.substr(0, colon), std::stoul(source.substr(colon + 1, second - colon - 1)),
+                                                 unsigned(std::stoul(source.substr(second + 1))));
+    c.start = ES::PLACING_START;
+  }
+  else
+    c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
+  c.strategy = ES::HELPER_STRATEGY;
+  c.order = ES::RANDOM_ORDER;
+  c.max_cycles = std::stoul(argv[4]);
+  const unsigned first = unsigned(std::stoul(argv[2])), last = unsigned(std::stoul(argv[3]));
+  const unsigned threads = argc == 6 ? unsigned(std::stoul(argv[5])) : 2u;
+  std::vector<std::string> lines(last - first + 1);
+  std::atomic<unsigned> next{first};
+  std::mutex out;
+  unsigned printed = first;
+  auto work = [&] {
+    for(unsigned seed; (seed = next++) <= last;)
+    {
+      ES::Conjecture_case<K::Point_3> run = c;
+      run.seed = seed;
+      const ES::Conjecture_outcome o = ES::run_conjecture_case(run);
+      nlohmann::json j{{"source", source}, {"points", c.points.size()}, {"seed", seed}, {"cycles", o.cycles},
+                       {"ending", ES::conjecture_ending_name(o)}, {"equal_to_cgal", o.equal_to_cgal},
+                       {"seconds", o.seconds}};
+      std::lock_guard<std::mutex> lock(out);
+      lines[seed - first] = j.dump();
+      for(; printed <= last && !lines[printed - first].empty(); ++printed) std::cout << lines[printed - first] << std::endl;
+    }
+  };
+  std::vector<std::thread> pool;
+  for(unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+  for(auto& t : pool) t.join();
+  return 0;
+}
