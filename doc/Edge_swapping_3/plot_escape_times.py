@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Escape times of the helper strategy in random order: for each point set,
 the share of runs (one per seed of the face order) still going at each cycle,
-on a log scale, from experiment_escape_times' JSON lines.
+on a log scale, from experiment_escape_times' JSON lines. A run that reached
+its cycle limit counts as still going to the end of the plot.
 Usage: /usr/bin/python3 plot_escape_times.py OUT.png LABEL1 FILE1 [LABEL2 FILE2 ...]"""
 import json, sys
 import matplotlib
@@ -12,17 +13,18 @@ def main(out, pairs):
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
     for label, path in pairs:
         runs = [json.loads(l) for l in open(path)]
-        cycles = sorted(r["cycles"] for r in runs)
-        n = len(cycles)
-        xs = list(range(0, cycles[-1] + 2))
+        n = len(runs)
+        cycles = sorted(r["cycles"] for r in runs if r["ending"] == "converged")
+        limit = max(r["cycles"] for r in runs)
+        xs = list(range(0, limit + 1))
         still = []
         k = 0
         for x in xs:
-            while k < n and cycles[k] <= x:
+            while k < len(cycles) and cycles[k] <= x:
                 k += 1
             still.append((n - k) / n)
         ax.step(xs, [max(s, 0.5 / n) for s in still], where="post",
-                label="%s (%d seeds, longest %d cycles)" % (label, n, cycles[-1]))
+                label="%s (%d seeds; %d not ended by cycle %d)" % (label, n, n - len(cycles), limit))
     ax.set_yscale("log")
     ax.set_xlabel("cycle")
     ax.set_ylabel("share of runs not yet ended")
