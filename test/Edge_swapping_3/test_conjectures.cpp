@@ -603,6 +603,42 @@ TEST_CASE("The trace checker rejects altered traces, naming the line", "[conject
   auto swapped = lines;
   std::swap(swapped[1], swapped[2]);
   require_rejected(joined(swapped), "fixed order", 1);
+
+  // Hostile traces: random byte changes, cuts and coordinates near the end of the
+  // double range give an answer with a line number and no crash (the seed is printed).
+  const std::string text = joined(lines);
+  const unsigned seed = 20261127;
+  INFO("mutation seed " << seed);
+  CGAL::Random rng(seed);
+  std::size_t refused = 0;
+  for(int k = 0; k < 300; ++k)
+  {
+    std::string bad = text;
+    const int changes = 1 + rng.get_int(0, 4);
+    for(int c = 0; c < changes; ++c)
+    {
+      const std::size_t at = std::size_t(rng.get_int(0, int(bad.size())));
+      switch(rng.get_int(0, 3))
+      {
+        case 0: bad[at] = "0123456789[]{},:\"-e."[rng.get_int(0, 21)]; break;
+        case 1: bad.erase(at, std::size_t(rng.get_int(1, 40))); break;
+        default: bad.insert(at, rng.get_int(0, 2) ? "1e308," : "-7,");
+      }
+    }
+    const auto r = check_text(bad);
+    if(!r.ok)
+    {
+      ++refused;
+      REQUIRE(r.error.rfind("line ", 0) == 0);
+    }
+  }
+  REQUIRE(refused > 250);
+  auto infinite = nlohmann::json::parse(lines[0]);
+  infinite["points"][0][0] = 1e308;
+  infinite["points"][1][1] = -1e308;
+  auto with_infinite = lines;
+  with_infinite[0] = infinite.dump();
+  REQUIRE_FALSE(check_text(joined(with_infinite)).ok);
 }
 
 TEST_CASE("edge_swap replay --trace writes the trace the checker confirms; insertion cases are refused",
