@@ -4,13 +4,16 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING]
+//   experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING [SAVE_DIR]]
 //
-// CASE is a case file (its points are used), or random-integer:N:SET for the
-// laboratory's N random integer points of set SET.
+// CASE is a case file (its points are used), random-integer:N:SET for the
+// laboratory's N random integer points of set SET, or family:NAME:N:SEED for
+// any family of point_families.h (the degenerate sets among them).
 //
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
-// "cleared-each-cycle,any-tetrahedron,no-swap"; the default is the package's.
+// "cleared-each-cycle,any-tetrahedron,no-swap", or is "all" for the 36; the
+// default is the package's. With SAVE_DIR, the first certified loop of each
+// reading is saved there as a case file with its trace.
 //
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
@@ -22,18 +25,21 @@
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "trace_checker.h"
+#include <algorithm>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace ES = CGAL::Edge_swapping_3;
 
 int main(int argc, char** argv)
 {
-  if(argc != 4 && argc != 5)
+  if(argc < 4 || argc > 6)
   {
-    std::cerr << "usage: experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING]\n";
+    std::cerr << "usage: experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING [SAVE_DIR]]\n";
     return 2;
   }
   ES::Conjecture_case<K::Point_3> c;
@@ -44,6 +50,19 @@ int main(int argc, char** argv)
     c.points = ES::point_families::random_integer<K::Point_3>(std::stoul(source.substr(15, colon - 15)),
                                                               unsigned(std::stoul(source.substr(colon + 1))));
   }
+  else if(source.rfind("family:", 0) == 0)
+  {
+    std::vector<std::string> part(1);
+    for(char ch : source.substr(7))
+      if(ch == ':') part.emplace_back();
+      else part.back() += ch;
+    if(part.size() != 3)
+    {
+      std::cerr << "experiment_priority_loops: family:NAME:N:SEED\n";
+      return 2;
+    }
+    c.points = ES::make_point_family<K::Point_3>(part[0], std::stoul(part[1]), unsigned(std::stoul(part[2])));
+  }
   else
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
   const auto all = ES::IO::topcom_triangulations(c.points, 1000000);
@@ -52,44 +71,64 @@ int main(int argc, char** argv)
   c.order = ES::PRIORITY_ORDER;
   c.start = ES::GIVEN_CELLS_START;
   c.max_cycles = std::stoul(argv[3]);
-  if(argc == 5 && !ES::helper_reading_from_name(argv[4], c.reading))
+  std::vector<ES::Helper_reading> readings(1);
+  if(argc >= 5 && std::string(argv[4]) == "all")
+    readings = ES::all_helper_readings();
+  else if(argc >= 5 && !ES::helper_reading_from_name(argv[4], readings[0]))
   {
     std::cerr << "experiment_priority_loops: unknown reading '" << argv[4] << "'\n";
     return 2;
   }
-  std::cout << "reading " << ES::helper_reading_name(c.reading) << '\n';
-  std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
-  for(unsigned seed = 1; seed <= std::stoul(argv[2]); ++seed)
+  const std::string save_dir = argc == 6 ? argv[5] : "";
+  for(const ES::Helper_reading& reading : readings)
   {
-    std::size_t limit = 0, stuck = 0, certified = 0;
-    long long first = -1;
-    for(std::size_t t = 0; t < all.triangulations.size(); ++t)
+    c.reading = reading;
+    std::cout << "reading " << ES::helper_reading_name(c.reading) << '\n';
+    std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
+    bool saved = false;
+    for(unsigned seed = 1; seed <= std::stoul(argv[2]); ++seed)
     {
-      c.cells = ES::oriented_cells(c.points, all.triangulations[t]);
-      c.seed = seed;
-      const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
-      ++runs;
-      if(o.equal_to_cgal) continue;
-      (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
-      if(first < 0) first = (long long)t;
-      // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
-      std::stringstream trace;
-      ES::trace_conjecture_case(c, trace);
-      const trace_checker::Result r = trace_checker::check_trace(trace);
-      if(!r.ok)
+      std::size_t limit = 0, stuck = 0, certified = 0;
+      long long first = -1;
+      for(std::size_t t = 0; t < all.triangulations.size(); ++t)
       {
-        std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
-        return 1;
+        c.cells = ES::oriented_cells(c.points, all.triangulations[t]);
+        c.seed = seed;
+        const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
+        ++runs;
+        if(o.equal_to_cgal) continue;
+        (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
+        if(first < 0) first = (long long)t;
+        // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
+        std::stringstream trace;
+        ES::trace_conjecture_case(c, trace);
+        const trace_checker::Result r = trace_checker::check_trace(trace);
+        if(!r.ok)
+        {
+          std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
+          return 1;
+        }
+        certified += r.loop_certified;
+        if(r.loop_certified && !saved && !save_dir.empty())
+        {
+          // The first certified loop of this reading, as a case file and its trace.
+          std::string reading_name = ES::helper_reading_name(c.reading);
+          std::replace(reading_name.begin(), reading_name.end(), ',', '_');
+          const std::string name =
+            save_dir + "/loop_" + std::to_string(c.points.size()) + "_points_" + reading_name + ".json";
+          std::ofstream(name) << ES::IO::conjecture_case_json(c).dump(1) << '\n';
+          std::ofstream(name.substr(0, name.size() - 5) + ".trace.jsonl") << trace.str();
+          saved = true;
+        }
       }
-      certified += r.loop_certified;
+      all_limit += limit;
+      all_stuck += stuck;
+      all_certified += certified;
+      std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << c.max_cycles << " ("
+                << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
     }
-    all_limit += limit;
-    all_stuck += stuck;
-    all_certified += certified;
-    std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << c.max_cycles << " ("
-              << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
+    std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
+              << " loops certified by the checker), " << all_stuck << " stuck\n";
   }
-  std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
-            << " loops certified by the checker), " << all_stuck << " stuck\n";
   return 0;
 }

@@ -14,10 +14,11 @@
 // end, with swaps in between, certifies that the run loops forever: the order
 // and the rule are functions of that state alone.
 //
-// What it does not check: configurations with four coplanar points among the
-// five (the 2-2 and 4-4 flips; it says so and fails), and, in the storage and
-// random orders, which facet comes next (it checks that each round visits
-// listed facets at most once each).
+// Configurations with four coplanar points among the five are checked too:
+// the 2-2 flip on the hull and the 4-4 flip inside, found by walking around
+// the edge through the cell set, and every flip must keep the volume, exactly.
+// What it does not check: in the storage and random orders, which facet comes
+// next (it checks that each round visits listed facets at most once each).
 
 #ifndef EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
 #define EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
@@ -107,17 +108,26 @@ public:
     require(header.value("schedule", "") == "cycles", "only traces of the paper's cycles are checked");
     seed_ = header.at("seed").get<std::uint64_t>();
     // The reading of Algorithm 4: tag lifetime, swap condition, ending (traces.md).
-    const std::string reading = header.at("reading").get<std::string>();
-    const auto first = reading.find(','), second = reading.rfind(',');
-    require(first != std::string::npos && second != first, "a reading is three names");
-    const std::string lifetime = reading.substr(0, first), condition = reading.substr(first + 1, second - first - 1),
-                      ending = reading.substr(second + 1);
-    require(lifetime == "until-destroyed" || lifetime == "cleared-each-cycle", "unknown tag lifetime");
-    require(condition == "pass-over" || condition == "any-tetrahedron", "unknown swap condition");
+    std::vector<std::string> reading(1);
+    for(char ch : header.at("reading").get<std::string>())
+      if(ch == ',') reading.emplace_back();
+      else reading.back() += ch;
+    require(reading.size() == 3 || reading.size() == 4, "a reading is three or four names");
+    if(reading.size() == 3) reading.push_back("next-cycle");
+    const std::string lifetime = reading[0], condition = reading[1], ending = reading[2], made = reading[3];
+    require(lifetime == "until-destroyed" || lifetime == "cleared-each-cycle" || lifetime == "never-cleared",
+            "unknown tag lifetime");
+    require(condition == "pass-over" || condition == "any-tetrahedron" || condition == "facet-cells",
+            "unknown swap condition");
     require(ending == "no-swap-no-tag" || ending == "no-swap", "unknown ending rule");
+    require(made == "next-cycle" || made == "same-cycle", "unknown visit of made facets");
     clear_tags_each_cycle_ = lifetime == "cleared-each-cycle";
-    pass_over_ = condition == "pass-over";
+    tags_outlive_cells_ = lifetime == "never-cleared";
+    pass_over_ = condition != "any-tetrahedron";
+    facet_cells_ = condition == "facet-cells";
     end_without_swap_ = ending == "no-swap";
+    sweep_ = made == "same-cycle";
+    require(!sweep_ || order_ != "storage", "same-cycle needs the priority or random order");
     max_rounds_ = header.at("max_rounds").get<std::size_t>();
     for(const auto& p : header.at("points"))
       points_.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
@@ -240,7 +250,7 @@ private:
   void remove_cell(const Cell& t)
   {
     require(cells_.erase(t) == 1, "a cell removed that is not there");
-    tags_.erase(t);
+    if(!tags_outlive_cells_) tags_.erase(t);
     for(const Facet& f : facets_of(t))
     {
       auto& holders = facets_[f];
@@ -282,9 +292,49 @@ private:
 
   // ---- rounds and the fixed order ----
 
+  /// The place of facet f in a sweep: its priority, then its points in lexicographic order.
+  struct Place
+  {
+    std::uint64_t key;
+    Facet by_points;
+  };
+
+  Place place_of(const Facet& f) const
+  {
+    Place p{0, f};
+    std::sort(p.by_points.begin(), p.by_points.end(), [&](std::size_t a, std::size_t b) {
+      return CGAL::compare_xyz(points_[a], points_[b]) == CGAL::SMALLER;
+    });
+    p.key = mix(point_key(sweep_seed_, points_[f[0]]) + point_key(sweep_seed_, points_[f[1]]) +
+                point_key(sweep_seed_, points_[f[2]]));
+    return p;
+  }
+
+  bool before(const Place& a, const Place& b) const
+  {
+    if(a.key != b.key) return a.key < b.key;
+    for(int k = 0; k < 3; ++k)
+      if(a.by_points[k] != b.by_points[k])
+        return CGAL::compare_xyz(points_[a.by_points[k]], points_[b.by_points[k]]) == CGAL::SMALLER;
+    return false;
+  }
+
   void begin_round()
   {
     if(clear_tags_each_cycle_) tags_.clear();
+    ++round_number_;
+    if(sweep_)
+    {
+      // A sweep (same-cycle): priority order, or in random order one drawn from the seed and the round.
+      sweep_seed_ = order_ == "priority" ? seed_ : mix(seed_ + round_number_);
+      ahead_.clear();
+      for(const auto& [f, holders] : facets_)
+        if(holders.size() == 2) ahead_.push_back(place_of(f));
+      std::sort(ahead_.begin(), ahead_.end(), [&](const Place& a, const Place& b) { return before(a, b); });
+      round_swaps_ = 0;
+      round_tags_ = 0;
+      return;
+    }
     listed_.clear();
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2) listed_.push_back(f);
@@ -319,6 +369,14 @@ private:
   /// Priority order: the next listed facet that exists now must be `f`.
   void check_turn(const Facet& f)
   {
+    if(sweep_)
+    {
+      while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
+      require(!ahead_.empty() && sorted_of(ahead_.front().by_points) == f, "a visit out of the sweep's order");
+      current_ = ahead_.front();
+      ahead_.erase(ahead_.begin());
+      return;
+    }
     if(order_ != "priority")
     {
       require(listed_set_.count(f) == 1, "a facet visited that was not there when the round began");
@@ -328,6 +386,120 @@ private:
     while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
     require(next_ < listed_.size() && listed_[next_] == f, "a visit out of the fixed order");
     ++next_;
+  }
+
+  // ---- the planar configurations ----
+
+  static std::array<std::size_t, 2> other_two(const Facet& f, std::size_t v)
+  {
+    std::array<std::size_t, 2> xy{};
+    int m = 0;
+    for(std::size_t w : f)
+      if(w != v) xy[m++] = w;
+    return xy;
+  }
+
+  /// The cells' total volume, exactly.
+  CGAL::Exact_predicates_exact_constructions_kernel::FT volume(const std::vector<Cell>& cells) const
+  {
+    typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
+    CGAL::Cartesian_converter<K, EK> to_exact;
+    EK::FT sum = 0;
+    for(const Cell& t : cells)
+    {
+      const Cell o = oriented(t);
+      sum += CGAL::volume(to_exact(points_[o[0]]), to_exact(points_[o[1]]), to_exact(points_[o[2]]),
+                          to_exact(points_[o[3]]));
+    }
+    return sum;
+  }
+
+  /// Point e lies in the plane of d and the edge (x, y) of facet f opposite z,
+  /// across (x, y) from d: the quadrilateral x d y e is convex, and the edge
+  /// (x, y) can give way to (d, e) if its cells are (x, y, z, d), (x, y, z, e)
+  /// and either two more, (x, y, w, d) and (x, y, w, e), closing the ring
+  /// around it (4-4), or none, both quadrilateral's triangles on the hull
+  /// (2-2). Walks around (x, y) through the cell set to find out.
+  std::string planar_flip(const Facet& f, std::size_t z, std::size_t d, std::size_t e, std::vector<Cell>& old_cells,
+                          std::vector<Cell>& new_cells, std::string& flip_name) const
+  {
+    const auto xy = other_two(f, z);
+    const std::size_t x = xy[0], y = xy[1];
+    // The ring of (x, y) from z through d: the cell across facet (x, y, current).
+    std::vector<std::size_t> ring{z, d};
+    bool closed = false;
+    for(std::size_t guard = 0; guard <= cells_.size(); ++guard)
+    {
+      const std::size_t prev = ring[ring.size() - 2], current = ring.back();
+      const Facet across = sorted_facet(x, y, current);
+      const auto it = facets_.find(across);
+      if(it == facets_.end() || it->second.size() < 2) break; // the hull
+      const Cell from = sorted({x, y, prev, current});
+      const Cell& next = it->second[0] == from ? it->second[1] : it->second[0];
+      const std::size_t w = apex(next, across);
+      if(w == z)
+      {
+        closed = true;
+        break;
+      }
+      ring.push_back(w);
+    }
+    std::vector<std::size_t> sides; // the apexes of the new cells beside z
+    if(closed && ring.size() == 4 && ring[3] == e)
+    {
+      flip_name = "4-4";
+      sides = {z, ring[2]};
+    }
+    else if(!closed && ring.size() == 2 && !is_interior(sorted_facet(x, y, e)))
+    {
+      flip_name = "2-2";
+      sides = {z};
+    }
+    else
+      return "planar unswappable";
+    for(std::size_t s : sides)
+      for(std::size_t v : {d, e})
+        old_cells.push_back(sorted({x, y, s, v}));
+    for(std::size_t s : sides)
+      for(std::size_t v : {x, y})
+        new_cells.push_back(sorted({d, e, s, v}));
+    for(const Cell& t : new_cells)
+      if(orientation(t[0], t[1], t[2], t[3]) == CGAL::COPLANAR)
+      {
+        old_cells.clear();
+        new_cells.clear();
+        flip_name.clear();
+        return "planar unswappable";
+      }
+    return flip_name == "4-4" ? "planar 4-4" : "planar hull 2-2";
+  }
+
+  static Facet sorted_facet(std::size_t a, std::size_t b, std::size_t c)
+  {
+    Facet t{a, b, c};
+    std::sort(t.begin(), t.end());
+    return t;
+  }
+
+  static Facet sorted_of(Facet f)
+  {
+    std::sort(f.begin(), f.end());
+    return f;
+  }
+
+  /// A sweep: the facets a flip made whose place is still ahead join it.
+  void add_made_facets(const std::vector<Cell>& made)
+  {
+    for(const Cell& t : made)
+      for(const Facet& f : facets_of(t))
+      {
+        if(!is_interior(f)) continue;
+        const Place p = place_of(f);
+        if(!before(current_, p)) continue;
+        const auto at = std::lower_bound(ahead_.begin(), ahead_.end(), p,
+                                         [&](const Place& a, const Place& b) { return before(a, b); });
+        if(at == ahead_.end() || before(p, *at)) ahead_.insert(at, p);
+      }
   }
 
   // ---- a visit ----
@@ -370,27 +542,32 @@ private:
 
     // The configuration: the signs of e's barycentric coordinates in the cell with d.
     const Cell o = oriented(cd);
-    int positive = 0, negative = 0;
-    std::size_t negative_vertex = 0;
+    int positive = 0, negative = 0, zero = 0;
+    std::size_t negative_vertex = 0, zero_vertex = 0;
     for(std::size_t v : f)
     {
       Cell r = o;
       for(auto& w : r)
         if(w == v) w = e;
       const CGAL::Orientation s = orientation(r[0], r[1], r[2], r[3]);
-      require(s != CGAL::COPLANAR, "four coplanar points among the five: not checked here (2-2 and 4-4)");
       if(s == CGAL::POSITIVE) ++positive;
+      else if(s == CGAL::COPLANAR)
+      {
+        ++zero;
+        zero_vertex = v;
+      }
       else
       {
         ++negative;
         negative_vertex = v;
       }
     }
-    std::string kind;
+    std::string kind, flip_name;
     std::vector<Cell> old_cells, new_cells;
     if(positive == 3)
     {
       kind = "two tetrahedra convex";
+      flip_name = "2-3";
       old_cells = {cd, sorted({f[0], f[1], f[2], e})};
       for(std::size_t v : f)
       {
@@ -400,24 +577,26 @@ private:
         new_cells.push_back(sorted(t));
       }
     }
-    else if(positive == 2)
+    else if(positive == 2 && negative == 1)
     {
       // Concave at the edge (x, y) opposite the negative vertex z; a 3-2 flip if (x, y, d, e) is a cell.
-      std::array<std::size_t, 2> xy;
-      int m = 0;
-      for(std::size_t v : f)
-        if(v != negative_vertex) xy[m++] = v;
+      const auto xy = other_two(f, negative_vertex);
       const Cell third = sorted({xy[0], xy[1], d, e});
       kind = "concave";
       if(cells_.count(third))
       {
         kind = "three tetrahedra convex";
+        flip_name = "3-2";
         old_cells = {cd, sorted({f[0], f[1], f[2], e}), third};
         new_cells = {sorted({xy[0], negative_vertex, d, e}), sorted({xy[1], negative_vertex, d, e})};
       }
     }
-    else
+    else if(positive == 2 && zero == 1)
+      kind = planar_flip(f, zero_vertex, d, e, old_cells, new_cells, flip_name);
+    else if(positive == 1 && negative == 2)
       kind = five_cells.size() == 4 ? "four tetrahedra" : "concave";
+    else
+      kind = "planar unswappable"; // e on the line of an edge, or in a plane and beyond an edge
     require(l.at("kind").get<std::string>() == kind, "the configuration is " + kind);
 
     // The rule.
@@ -434,8 +613,11 @@ private:
         if(!delaunay)
           for(const Cell& t : five_cells)
             if(!tags_.count(t)) new_tags.insert(t);
-        for(const Cell& t : old_cells)
-          if(tags_.count(t) || new_tags.count(t)) swap = true;
+        const std::vector<Cell> must_be_tagged =
+          facet_cells_ ? std::vector<Cell>{cd, sorted({f[0], f[1], f[2], e})} : old_cells;
+        if(!old_cells.empty())
+          for(const Cell& t : must_be_tagged)
+            if(tags_.count(t) || new_tags.count(t)) swap = true;
       }
     }
     require(cell_set(l.at("new_tags")) == new_tags, "the tags set are not those the rule sets");
@@ -449,15 +631,17 @@ private:
       return;
     }
     require(!flip.is_null(), "a swap the rule makes is missing");
-    require(flip.get<std::string>() == (old_cells.size() == 2 ? "2-3" : "3-2"), "the wrong flip");
+    require(flip.get<std::string>() == flip_name, "the wrong flip");
     const std::set<Cell> made(new_cells.begin(), new_cells.end());
     require(cell_set(l.at("created")) == made, "the flip made other cells");
+    require(volume(new_cells) == volume(old_cells), "the flip does not keep the volume");
     for(const Cell& t : old_cells) remove_cell(t);
     for(const Cell& t : new_cells)
     {
       oriented(t); // not flat
       add_cell(t);
     }
+    if(sweep_) add_made_facets(new_cells);
     ++round_swaps_;
     ++result.swaps;
     ++result.visits;
@@ -469,7 +653,12 @@ private:
   {
     const std::size_t round = l.at("round").get<std::size_t>();
     require(round == result.rounds + 1, "rounds out of sequence");
-    if(order_ == "priority")
+    if(sweep_)
+    {
+      while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
+      require(ahead_.empty(), "the round ended before a facet ahead in the sweep was visited");
+    }
+    else if(order_ == "priority")
     {
       while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
       require(next_ == listed_.size(), "the round ended before a listed facet that is still there was visited");
@@ -477,7 +666,10 @@ private:
     require(l.at("swaps").get<std::size_t>() == round_swaps_, "the round's swap count is wrong");
     require(l.at("new_tags").get<std::size_t>() == round_tags_, "the round's count of new tags is wrong");
     require(cell_set(l.at("cells")) == cells_, "the cells at the round's end differ");
-    require(cell_set(l.at("tagged")) == tags_, "the tags at the round's end differ");
+    std::set<Cell> tags_of_cells; // never-cleared: tags of destroyed cells are kept, but not listed
+    for(const Cell& t : tags_)
+      if(cells_.count(t)) tags_of_cells.insert(t);
+    require(cell_set(l.at("tagged")) == tags_of_cells, "the tags at the round's end differ");
     result.rounds = round;
     last_round_idle_ = round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_);
     if(order_ == "priority" && !result.loop_certified)
@@ -540,6 +732,11 @@ private:
   std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
   bool last_round_idle_ = false, ended_ = false;
   bool clear_tags_each_cycle_ = false, pass_over_ = true, end_without_swap_ = false;
+  bool tags_outlive_cells_ = false, facet_cells_ = false, sweep_ = false;
+  std::size_t round_number_ = 0;
+  std::uint64_t sweep_seed_ = 0;
+  std::vector<Place> ahead_; // a sweep: the places still ahead, in order
+  Place current_{0, {}};
   std::map<std::pair<std::set<Cell>, std::set<Cell>>, std::size_t> seen_;
 };
 

@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <set>
+#include <sstream>
 #include <thread>
 #include <tuple>
 
@@ -35,6 +36,7 @@ struct Experiment_options
   std::vector<std::string> starts{"placing"};
   std::vector<std::string> strategies{"plain", "helper"};
   std::vector<std::string> orders{"random"};
+  std::string readings; // the helper's, separated by ';', or "all"
   std::vector<std::string> point_files;
   std::string output;
   std::string shard = "0/1";
@@ -101,6 +103,21 @@ inline int run_experiment(const Experiment_options& opt)
   {
     experiment.orders.emplace_back();
     if(!ES::face_order_from_name(o, experiment.orders.back())) throw Usage_error("unknown face order '" + o + "'");
+  }
+  if(opt.readings == "all")
+    experiment.readings = ES::all_helper_readings();
+  else if(!opt.readings.empty())
+  {
+    experiment.readings.clear();
+    std::string name;
+    std::istringstream list(opt.readings);
+    while(std::getline(list, name, ';'))
+    {
+      experiment.readings.emplace_back();
+      if(!ES::helper_reading_from_name(name, experiment.readings.back()))
+        throw Usage_error("--readings: unknown reading '" + name + "' (doc/Edge_swapping_3/traces.md)");
+    }
+    if(experiment.readings.empty()) throw Usage_error("--readings: no reading");
   }
   for(const auto& s : opt.starts)
     if(s != "placing" && s != "topcom" && s.rfind("scramble:", 0) != 0) throw Usage_error("unknown start '" + s + "'");
@@ -210,6 +227,7 @@ inline int run_experiment(const Experiment_options& opt)
                         {"strategy", ES::conjecture_strategy_name(in.strategy)},
                         {"order", ES::face_order_name(in.order)},
                         {"failure", failure}};
+    if(!in.reading.is_default()) j["reading"] = ES::helper_reading_name(in.reading);
     j.update(IO::conjecture_outcome_json(o));
     if(!opt.cases_dir.empty() &&
        (failure || (!o.bad_start && o.ending == ES::STUCK && c.points.size() <= opt.stuck_case_max_points)))

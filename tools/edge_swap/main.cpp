@@ -88,13 +88,16 @@ int main(int argc, char** argv)
   experiment->add_option("-o,--output", exp.output, "JSON lines, appended to: a stopped run resumes")->required();
   experiment->add_option("--families", exp.families, "point families, comma separated: random-cube, random-ball, sphere, "
                          "grid, cospherical, planes, clusters, jittered-grid, nearly-flat, random-integer, cube-corners, "
-                         "cube-centre, octahedron, octahedron-centre")->delimiter(',');
+                         "cube-centre, octahedron, octahedron-centre, cube-face-centres, grid-2x2x3, grid-3x3x2, "
+                         "two-spheres")->delimiter(',');
   experiment->add_option("--points-file", exp.point_files, "TetGen .node point sets of your own (more families)")->delimiter(',');
   experiment->add_option("--sizes", exp.sizes, "numbers of points, comma separated")->delimiter(',');
   experiment->add_option("--seeds", exp.seeds, "seeds: N or A-B (each one a point set and a face-order stream)");
   experiment->add_option("--starts", exp.starts, "placing (random order), scramble:K (Delaunay and K random flips), topcom (every fine triangulation)")->delimiter(',');
   experiment->add_option("--strategies", exp.strategies, "plain, helper, insertion")->delimiter(',');
   experiment->add_option("--orders", exp.orders, "face orders: storage, random, priority")->delimiter(',');
+  experiment->add_option("--readings", exp.readings, "the helper's readings of Algorithm 4, separated by ';' "
+                         "(doc/Edge_swapping_3/traces.md), or all (36)");
   experiment->add_option("--max-cycles", exp.max_cycles, "cycle limit of each run")->check(CLI::PositiveNumber);
   experiment->add_option("--threads", exp.threads, "threads (default: all cores)");
   experiment->add_option("--shard", exp.shard, "I/N: run only the instances numbered I modulo N");

@@ -32,7 +32,7 @@ struct Visit_record
   std::vector<bool> tagged_before;      ///< helper: whether each of `cells` was tagged before the visit
   std::vector<Cell_vertices> new_tags;  ///< helper: the cells the visit tagged
   int flip = -1;                        ///< the `Flip_kind` of the swap the visit made, or -1
-  std::vector<Cell_vertices> created;   ///< the cells the swap made
+  std::vector<Cell_vertices> created;   ///< the finite cells the swap made
 };
 
 /// \ingroup PkgEdgeSwapping3Reports

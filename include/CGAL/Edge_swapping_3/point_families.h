@@ -105,6 +105,14 @@ std::vector<Point> cospherical_subset(std::size_t n, unsigned seed)
   return p;
 }
 
+template <class Point>
+std::vector<Point> two_concentric_spheres(std::size_t n, unsigned seed)
+{
+  std::vector<Point> p = cospherical_subset<Point>(n / 2, seed);
+  for(const Point& q : cospherical_subset<Point>(n - n / 2, seed + 1)) p.emplace_back(3 * q.x(), 3 * q.y(), 3 * q.z());
+  return p;
+}
+
 /// Random integer points on a few parallel planes: many coplanar and cocircular subsets.
 template <class Point>
 std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed)
@@ -171,6 +179,27 @@ std::vector<Point> cube_corners(bool with_centre)
   return p;
 }
 
+/// The corners of the cube [0,2]^3, its centre and the centres of its six faces (15 points).
+template <class Point>
+std::vector<Point> cube_with_centre_and_face_centres()
+{
+  std::vector<Point> p = cube_corners<Point>(true);
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side : {0, 2})
+    {
+      int c[3] = {1, 1, 1};
+      c[axis] = side;
+      p.emplace_back(c[0], c[1], c[2]);
+    }
+  return p;
+}
+
+/// `n` integer points on two concentric spheres about the origin: about half
+/// on the inner (as `cospherical_subset`), the rest on a sphere three times
+/// as large, each drawn from `seed`.
+template <class Point>
+std::vector<Point> two_concentric_spheres(std::size_t n, unsigned seed);
+
 /// The octahedron (+-1,0,0), (0,+-1,0), (0,0,+-1), with its centre if asked.
 template <class Point>
 std::vector<Point> octahedron(bool with_centre)
@@ -188,11 +217,11 @@ inline std::vector<std::string> point_family_names()
 {
   return {"random-cube", "random-ball", "sphere",   "grid",     "cospherical", "planes",   "clusters",
           "jittered-grid", "nearly-flat", "random-integer", "cube-corners", "cube-centre", "octahedron",
-          "octahedron-centre"};
+          "octahedron-centre", "cube-face-centres", "grid-2x2x3", "grid-3x3x2", "two-spheres"};
 }
 
 /// The family `name` with about `n` points (grids: the nearest k x k x k;
-/// cube and octahedron: their own size), drawn from `seed`. Throws for an
+/// cube, octahedron and the fixed grids: their own size), drawn from `seed`. Throws for an
 /// unknown name.
 template <class Point>
 std::vector<Point> make_point_family(const std::string& name, std::size_t n, unsigned seed)
@@ -213,6 +242,10 @@ std::vector<Point> make_point_family(const std::string& name, std::size_t n, uns
   if(name == "cube-centre") return pf::cube_corners<Point>(true);
   if(name == "octahedron") return pf::octahedron<Point>(false);
   if(name == "octahedron-centre") return pf::octahedron<Point>(true);
+  if(name == "cube-face-centres") return pf::cube_with_centre_and_face_centres<Point>();
+  if(name == "grid-2x2x3") return pf::grid<Point>(2, 2, 3);
+  if(name == "grid-3x3x2") return pf::grid<Point>(3, 3, 2);
+  if(name == "two-spheres") return pf::two_concentric_spheres<Point>(n, seed);
   throw std::invalid_argument("unknown point family '" + name + "'");
 }
 

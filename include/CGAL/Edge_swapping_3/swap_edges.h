@@ -81,7 +81,7 @@ struct Criterion_rule
 /// configuration with a tagged tetrahedron is swapped, Delaunay or not.
 struct Helper_rule
 {
-  bool pass_over = true; // Helper_reading::swap_condition
+  Helper_swap_condition condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS; // Helper_reading::swap_condition
 
   template <class Driver, class Cell_handle>
   void operator()(Driver& d, Cell_handle c, int i) const
@@ -91,6 +91,8 @@ struct Helper_rule
     // swappable configuration with a tagged cell is also reached through a
     // facet of that cell, so no help is lost, only deferred.
     const bool delaunay = is_locally_delaunay(tr, c, i, d.perturbation());
+    // (With a tag needed on the facet's cells, such a visit swaps nothing either.)
+    const bool pass_over = condition != TAG_ON_ANY_TETRAHEDRON;
     if(pass_over && delaunay && !d.is_tagged(c) && !d.is_tagged(c->neighbor(i))) return;
     const auto conf = classify_facet(tr, c, i);
     if(!delaunay)
@@ -98,12 +100,16 @@ struct Helper_rule
     if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()))
     {
       const auto& plan = conf.flip_plan();
-      for(int k = 0; k < plan.number_of_old_cells; ++k)
-        if(d.is_tagged(plan.old_cells[k]))
-        {
-          d.flip(conf); // the new cells are untagged
-          return;
-        }
+      bool tagged = false;
+      if(condition == TAG_ON_FACET_CELLS)
+        tagged = d.is_tagged(c) || d.is_tagged(c->neighbor(i));
+      else
+        for(int k = 0; k < plan.number_of_old_cells; ++k) tagged = tagged || d.is_tagged(plan.old_cells[k]);
+      if(tagged)
+      {
+        d.flip(conf); // the new cells are untagged (unless the reading remembers their vertices)
+        return;
+      }
     }
     // A non-Delaunay facet is visited again in the next round, as in a cycle.
     d.keep(conf, !delaunay, !delaunay);
@@ -145,7 +151,7 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& cons
     if(s.schedule == WORK_QUEUE && !s.reading.is_default())
       throw std::invalid_argument("Edge_swapping_3: the readings of Algorithm 4 other than the package's run on the "
                                   "paper's cycles (schedule PAPER_CYCLES)");
-    Helper_rule rule{s.reading.swap_condition == PASS_OVER_UNTAGGED_DELAUNAY_FACETS};
+    Helper_rule rule{s.reading.swap_condition};
     Swap_report report = driver.run(rule);
     decide_delaunay_ending(report, driver, s);
     return report;

@@ -233,7 +233,9 @@ inline void print_results_summary(const std::string& path, const std::vector<nlo
     std::string start = j["start"];
     const bool is_topcom = start.rfind("topcom:", 0) == 0;
     if(is_topcom) start = "topcom";
-    Row& r = rows[{j["family"], start, j["strategy"], j["order"]}];
+    std::string strategy = j["strategy"];
+    if(j.contains("reading")) strategy += " " + j["reading"].get<std::string>();
+    Row& r = rows[{j["family"], start, strategy, j["order"]}];
     ++r.instances;
     const std::string ending = j["ending"];
     r.converged += ending == "converged";

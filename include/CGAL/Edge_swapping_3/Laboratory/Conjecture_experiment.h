@@ -40,12 +40,15 @@ struct Conjecture_instance
   std::string start;     ///< placing | scramble:K | topcom:I (the I-th TOPCOM triangulation) | - (insertion)
   Conjecture_strategy strategy = HELPER_STRATEGY; ///< what runs
   Face_order order = RANDOM_ORDER;                ///< the face order
+  Helper_reading reading;                         ///< the helper's reading of Algorithm 4
 
-  /// The instance's name in results files: family|size|seed|start|strategy|order.
+  /// The instance's name in results files: family|size|seed|start|strategy|order,
+  /// and |reading when it is not the package's.
   std::string key() const
   {
     return family + "|" + std::to_string(size) + "|" + std::to_string(seed) + "|" + start + "|" +
-           conjecture_strategy_name(strategy) + "|" + face_order_name(order);
+           conjecture_strategy_name(strategy) + "|" + face_order_name(order) +
+           (reading.is_default() ? std::string() : "|" + helper_reading_name(reading));
   }
 };
 
@@ -62,6 +65,9 @@ struct Conjecture_experiment
   std::vector<std::string> starts{"placing"};        ///< placing, scramble:K, topcom
   std::vector<Conjecture_strategy> strategies{PLAIN_SWAPS, HELPER_STRATEGY}; ///< the strategies
   std::vector<Face_order> orders{RANDOM_ORDER};      ///< the face orders
+  /// The helper's readings (plain swapping and insertion run the package's). A
+  /// reading that visits facets made in a cycle in it is not run in storage order.
+  std::vector<Helper_reading> readings{Helper_reading()};
   std::size_t max_cycles = 1000;                     ///< the cycle limit of each run
 };
 
@@ -122,8 +128,11 @@ Conjecture_instances conjecture_instances(const Conjecture_experiment<Point>& ex
             for(Conjecture_strategy strategy : experiment.strategies)
               if(strategy != INSERTION_WITH_PLAIN_SWAPS)
                 for(Face_order order : experiment.orders)
-                  out.instances.push_back(
-                      {family, size, seed, start == "topcom" ? "topcom:" + std::to_string(t) : start, strategy, order});
+                  for(const Helper_reading& reading :
+                      strategy == HELPER_STRATEGY ? experiment.readings : std::vector<Helper_reading>{Helper_reading()})
+                    if(order != STORAGE_ORDER || reading.made_facets != MADE_FACETS_SAME_CYCLE)
+                      out.instances.push_back({family, size, seed, start == "topcom" ? "topcom:" + std::to_string(t) : start,
+                                               strategy, order, reading});
         }
         if(insertion)
           for(Face_order order : experiment.orders)
@@ -146,6 +155,7 @@ Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
   c.points = conjecture_family_points(experiment, instance.family, instance.size, instance.seed);
   c.strategy = instance.strategy;
   c.order = instance.order;
+  c.reading = instance.reading;
   c.seed = instance.seed;
   c.max_cycles = experiment.max_cycles;
   const std::string& start = instance.start;

@@ -36,6 +36,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <set>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -139,6 +140,8 @@ struct Vertex_slot_triple
   }
 };
 
+typedef std::array<std::uint32_t, 4> Vertex_slot_quadruple;
+
 struct Vertex_slot_triple_hash
 {
   std::size_t operator()(const Vertex_slot_triple& t) const
@@ -189,6 +192,7 @@ public:
     s |= TAGGED;
     any_tag_ = true;
     ++record_.new_tags;
+    if(settings_.reading.tag_lifetime == TAGS_NEVER_CLEARED) remembered_tags_.insert(vertex_slots(c));
     if constexpr(tracing)
       if(trace_ != nullptr) trace_->new_tags.push_back(cell_vertices(c));
     if(!queueing_) return;
@@ -219,12 +223,18 @@ public:
     }
     std::array<Cell_handle, 4> created;
     const int n = execute_flip(tr_, plan, created, constraints_);
+    if(!remembered_tags_.empty())
+      for(int k = 0; k < n; ++k)
+        if(!tr_.is_infinite(created[k]) && remembered_tags_.count(vertex_slots(created[k])))
+          state(created[k]) |= TAGGED; // made again on tagged vertices
+    if(sweeping_) made_.assign(created.begin(), created.begin() + n);
     unwrap(visitor_).after_flip(tr_, plan, created, n);
     if constexpr(tracing)
       if(trace_ != nullptr)
       {
         trace_->flip = int(plan.kind);
-        for(int k = 0; k < n; ++k) trace_->created.push_back(cell_vertices(created[k]));
+        for(int k = 0; k < n; ++k) // a 2-2 flip also makes cells outside the hull
+          if(!tr_.is_infinite(created[k])) trace_->created.push_back(cell_vertices(created[k]));
       }
     if(!queueing_)
       relist_made_again(created, n);
@@ -281,7 +291,9 @@ public:
     CGAL_precondition(tr_.dimension() == 3);
     CGAL::Real_timer timer;
     timer.start();
-    Swap_report report = (settings_.schedule == WORK_QUEUE) ? run_work_queue(visit) : run_cycles(visit);
+    Swap_report report = (settings_.schedule == WORK_QUEUE)                         ? run_work_queue(visit)
+                         : (settings_.reading.made_facets == MADE_FACETS_SAME_CYCLE) ? run_sweeps(visit)
+                                                                                      : run_cycles(visit);
     report.seconds = timer.time();
     return report;
   }
@@ -637,6 +649,23 @@ private:
   }
 
   // ---- the paper's cycles ----
+
+  void begin_cycle_tags()
+  {
+    if(settings_.reading.tag_lifetime == TAGS_CLEARED_EACH_CYCLE && any_tag_)
+    {
+      for(State& s : state_) s &= State(~TAGGED);
+      any_tag_ = false;
+    }
+  }
+
+  /// Whether the cycle that just ended ends the run.
+  bool cycle_ends_run() const
+  {
+    // A round that tagged a cell changed what the next would do (unless the
+    // reading ends on the first cycle without a swap).
+    return record_.total_swaps() == 0 && (record_.new_tags == 0 || settings_.reading.cycle_ending == NO_SWAP);
+  }
   //
   // A cycle lists every interior facet once, as slot and index (4 bytes), and
   // visits each at its turn if it still exists, whatever flips happened in
@@ -698,6 +727,15 @@ private:
           made_again_.erase(key);
         }
       }
+  }
+
+  /// The cell's vertices by their slots, in increasing order.
+  Vertex_slot_quadruple vertex_slots(Cell_handle c)
+  {
+    Vertex_slot_quadruple t;
+    for(int k = 0; k < 4; ++k) t[k] = std::uint32_t(vertex_index_(c->vertex(k)));
+    std::sort(t.begin(), t.end());
+    return t;
   }
 
   Vertex_slot_triple vertex_slots(Cell_handle c, int i)
@@ -771,11 +809,7 @@ private:
     {
       record_ = Cycle_record();
       record_.cycle = round;
-      if(settings_.reading.tag_lifetime == TAGS_CLEARED_EACH_CYCLE && any_tag_)
-      {
-        for(State& s : state_) s &= State(~TAGGED);
-        any_tag_ = false;
-      }
+      begin_cycle_tags();
       for(Cell_handle c : tr_.finite_cell_handles())
         for(int i = 0; i < 4; ++i)
           if(holds_facet(tr_, c, i))
@@ -822,14 +856,110 @@ private:
       entry_of_ = {};
       made_again_ = {};
       end_round(report);
-      // A round that tagged a cell changed what the next would do (unless the
-      // reading ends on the first cycle without a swap).
-      if(record_.total_swaps() == 0 && (record_.new_tags == 0 || settings_.reading.cycle_ending == NO_SWAP))
+      if(cycle_ends_run())
       {
         report.ending = CONVERGED;
         break;
       }
     }
+    return report;
+  }
+
+  // ---- the paper's cycles, the facets made during a cycle visited in it ----
+  //
+  // A cycle is a sweep through a total order of vertex triples: the fixed
+  // order (priority), or one drawn for the cycle (random: the priority of a
+  // seed made from the run's seed and the cycle's number). A facet is visited
+  // when the sweep reaches its place if it exists then, whether it was there
+  // when the cycle began or a flip made it since; one whose place the sweep
+  // has passed waits for the next cycle. A triple has one place, so a cycle
+  // visits it at most once and ends.
+
+  struct Sweep_place
+  {
+    std::uint64_t priority;
+    std::array<Vertex_handle, 3> v; // by their points, lexicographically
+  };
+
+  Sweep_place sweep_place(std::uint64_t seed, Cell_handle c, int i) const
+  {
+    Sweep_place p;
+    for(int k = 0; k < 3; ++k) p.v[k] = c->vertex((i + 1 + k) & 3);
+    const auto compare = tr_.geom_traits().compare_xyz_3_object();
+    std::sort(p.v.begin(), p.v.end(), [&](Vertex_handle a, Vertex_handle b) {
+      return compare(bare_point(a->point()), bare_point(b->point())) == SMALLER;
+    });
+    p.priority = facet_priority(seed, bare_point(p.v[0]->point()), bare_point(p.v[1]->point()),
+                                bare_point(p.v[2]->point()));
+    return p;
+  }
+
+  bool comes_before(const Sweep_place& a, const Sweep_place& b) const
+  {
+    if(a.priority != b.priority) return a.priority < b.priority;
+    const auto compare = tr_.geom_traits().compare_xyz_3_object();
+    for(int k = 0; k < 3; ++k)
+      if(a.v[k] != b.v[k]) return compare(bare_point(a.v[k]->point()), bare_point(b.v[k]->point())) == SMALLER;
+    return false;
+  }
+
+  template <class Rule>
+  Swap_report run_sweeps(Rule& visit)
+  {
+    if(settings_.face_order == STORAGE_ORDER)
+      throw std::invalid_argument("Edge_swapping_3: visiting the facets made during a cycle in it needs the "
+                                  "priority or the random face order");
+    queueing_ = false;
+    sweeping_ = true;
+    Swap_report report;
+    report.ending = CYCLE_LIMIT_REACHED;
+    auto before = [this](const Sweep_place& a, const Sweep_place& b) { return comes_before(a, b); };
+    for(std::size_t round = 1; round <= settings_.max_rounds; ++round)
+    {
+      record_ = Cycle_record();
+      record_.cycle = round;
+      begin_cycle_tags();
+      const std::uint64_t seed = settings_.face_order == RANDOM_ORDER
+                                   ? splitmix64(std::uint64_t(settings_.random_seed) + round)
+                                   : std::uint64_t(settings_.random_seed);
+      std::set<Sweep_place, decltype(before)> ahead(before);
+      for(Cell_handle c : tr_.finite_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(holds_facet(tr_, c, i)) ahead.insert(sweep_place(seed, c, i));
+      while(!ahead.empty())
+      {
+        const Sweep_place place = *ahead.begin();
+        ahead.erase(ahead.begin());
+        Cell_handle c;
+        int i;
+        std::array<Vertex_handle, 3> v = place.v;
+        std::sort(v.begin(), v.end(), [](Vertex_handle a, Vertex_handle b) { return address_of(a) < address_of(b); });
+        if(!find_facet(tr_, Key{v[0], v[1], v[2]}, Cell_handle(), c, i)) continue; // destroyed
+        if(tr_.is_infinite(c) || tr_.is_infinite(c->neighbor(i))) continue;
+        if(!holds_facet(tr_, c, i))
+        {
+          const Cell_handle n = c->neighbor(i);
+          i = n->index(c);
+          c = n;
+        }
+        made_.clear();
+        visit_facet(visit, c, i);
+        for(Cell_handle m : made_)
+          for(int j = 0; j < 4; ++j)
+            if(holds_facet(tr_, m, j))
+            {
+              const Sweep_place p = sweep_place(seed, m, j);
+              if(comes_before(place, p)) ahead.insert(p);
+            }
+      }
+      end_round(report);
+      if(cycle_ends_run())
+      {
+        report.ending = CONVERGED;
+        break;
+      }
+    }
+    sweeping_ = false;
     return report;
   }
 
@@ -993,6 +1123,10 @@ private:
   // the addresses: which edges pass decides which facets are visited again,
   // and a run must not depend on where the cells are in memory.
   Bit_filter<Edge, Edge_point_hash> may_be_registered_;
+  // The reading TAGS_NEVER_CLEARED: the vertices of every cell ever tagged.
+  std::set<Vertex_slot_quadruple> remembered_tags_;
+  bool sweeping_ = false;          // run_sweeps: a flip lists the cells it made in made_
+  std::vector<Cell_handle> made_;
   Cell_handle current_cell_; // the facet under visit
   int current_index_ = 0;
   VisitVisitor* visit_visitor_ = nullptr;
