@@ -13,7 +13,8 @@
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
 // "cleared-each-cycle,any-tetrahedron,no-swap", or is "all" for the 36; the
 // default is the package's. With SAVE_DIR, the first certified loop of each
-// reading is saved there as a case file with its trace.
+// reading is saved there as a case file with its trace, unless one of the
+// same size and reading is there already.
 //
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
@@ -116,8 +117,11 @@ int main(int argc, char** argv)
           std::replace(reading_name.begin(), reading_name.end(), ',', '_');
           const std::string name =
             save_dir + "/loop_" + std::to_string(c.points.size()) + "_points_" + reading_name + ".json";
-          std::ofstream(name) << ES::IO::conjecture_case_json(c).dump(1) << '\n';
-          std::ofstream(name.substr(0, name.size() - 5) + ".trace.jsonl") << trace.str();
+          if(!std::ifstream(name)) // an earlier run's is kept
+          {
+            std::ofstream(name) << ES::IO::conjecture_case_json(c).dump(1) << '\n';
+            std::ofstream(name.substr(0, name.size() - 5) + ".trace.jsonl") << trace.str();
+          }
           saved = true;
         }
       }
