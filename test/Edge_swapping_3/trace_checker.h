@@ -12,7 +12,11 @@
 // state at a round's end that differs. Under the fixed order (priority), a
 // state (cells and tags) at a round's end that comes back at a later round's
 // end, with swaps in between, certifies that the run loops forever: the order
-// and the rule are functions of that state alone.
+// and the rule are functions of that state alone. Under an adversarial order
+// (chosen by a search) it certifies that repeating the same choices loops.
+//
+// Its `decide` and `apply` are also the model that the adversarial search
+// (benchmark/Edge_swapping_3/experiment_adversarial_orders.cpp) drives.
 //
 // Configurations with four coplanar points among the five are checked too:
 // the 2-2 flip on the hull and the 4-4 flip inside, found by walking around
@@ -104,7 +108,10 @@ public:
     strategy_ = header.at("strategy").get<std::string>();
     require(strategy_ == "helper" || strategy_ == "plain", "unknown strategy '" + strategy_ + "'");
     order_ = header.at("order").get<std::string>();
-    require(order_ == "storage" || order_ == "random" || order_ == "priority", "unknown order '" + order_ + "'");
+    // "adversarial": any order that visits each facet listed at a round's start
+    // at most once (an order chosen by a search, experiment_adversarial_orders).
+    require(order_ == "storage" || order_ == "random" || order_ == "priority" || order_ == "adversarial",
+            "unknown order '" + order_ + "'");
     require(header.value("schedule", "") == "cycles", "only traces of the paper's cycles are checked");
     seed_ = header.at("seed").get<std::uint64_t>();
     // The reading of Algorithm 4: tag lifetime, swap condition, ending (traces.md).
@@ -127,7 +134,7 @@ public:
     facet_cells_ = condition == "facet-cells";
     end_without_swap_ = ending == "no-swap";
     sweep_ = made == "same-cycle";
-    require(!sweep_ || order_ != "storage", "same-cycle needs the priority or random order");
+    require(!sweep_ || order_ == "priority" || order_ == "random", "same-cycle needs the priority or random order");
     max_rounds_ = header.at("max_rounds").get<std::size_t>();
     for(const auto& p : header.at("points"))
       points_.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
@@ -504,26 +511,33 @@ private:
 
   // ---- a visit ----
 
-  void visit(const nlohmann::json& l, Result& result)
+public:
+  /// What the rule does at one visit, decided here from the state alone.
+  struct Decision
   {
-    Facet f;
-    for(int k = 0; k < 3; ++k) f[k] = l.at("facet").at(k).get<std::size_t>();
-    std::sort(f.begin(), f.end());
-    require(is_interior(f), "a visited facet that is not an interior facet now");
-    check_turn(f);
-    const auto& holders = facets_.at(f);
-    const std::size_t d = l.at("apexes").at(0).get<std::size_t>(), e = l.at("apexes").at(1).get<std::size_t>();
-    const std::size_t h0 = apex(holders[0], f), h1 = apex(holders[1], f);
-    require((d == h0 && e == h1) || (d == h1 && e == h0), "the apexes are not those of the facet's cells");
-    const Cell cd = sorted({f[0], f[1], f[2], d});
+    Facet facet;
+    std::size_t d = 0, e = 0; // the apexes
+    bool delaunay = false;
+    std::set<Cell> five_cells;
+    std::string kind, flip_name;
+    std::vector<Cell> old_cells, new_cells;
+    std::set<Cell> new_tags;
+    bool swap = false;
+  };
 
+  /// The decision at interior facet `f` seen with apex `d` first.
+  Decision decide(const Facet& f, std::size_t d, std::size_t e) const
+  {
+    Decision r;
+    r.facet = f;
+    r.d = d;
+    r.e = e;
+    const Cell cd = sorted({f[0], f[1], f[2], d});
     // Locally Delaunay: e outside the (perturbed) sphere of the cell with d.
-    const bool delaunay = !inside_sphere(oriented(cd), e);
-    require(l.at("delaunay").get<bool>() == delaunay, "the in-sphere test says otherwise");
+    r.delaunay = !inside_sphere(oriented(cd), e);
 
     // The cells made of the five points.
     const std::array<std::size_t, 5> five{f[0], f[1], f[2], d, e};
-    std::set<Cell> five_cells;
     for(int skip = 0; skip < 5; ++skip)
     {
       Cell t;
@@ -531,14 +545,8 @@ private:
       for(int k = 0; k < 5; ++k)
         if(k != skip) t[m++] = five[k];
       t = sorted(t);
-      if(cells_.count(t)) five_cells.insert(t);
+      if(cells_.count(t)) r.five_cells.insert(t);
     }
-    require(cell_set(l.at("cells")) == five_cells, "the cells of the five points are not these");
-    const auto& tagged_list = l.at("tagged");
-    require(tagged_list.size() == l.at("cells").size(), "a tag flag per cell");
-    for(std::size_t k = 0; k < tagged_list.size(); ++k)
-      require((tagged_list.at(k).get<int>() != 0) == (tags_.count(cell_of(l.at("cells").at(k))) == 1),
-              "a tag read wrongly");
 
     // The configuration: the signs of e's barycentric coordinates in the cell with d.
     const Cell o = oriented(cd);
@@ -546,10 +554,10 @@ private:
     std::size_t negative_vertex = 0, zero_vertex = 0;
     for(std::size_t v : f)
     {
-      Cell r = o;
-      for(auto& w : r)
+      Cell q = o;
+      for(auto& w : q)
         if(w == v) w = e;
-      const CGAL::Orientation s = orientation(r[0], r[1], r[2], r[3]);
+      const CGAL::Orientation s = orientation(q[0], q[1], q[2], q[3]);
       if(s == CGAL::POSITIVE) ++positive;
       else if(s == CGAL::COPLANAR)
       {
@@ -562,19 +570,17 @@ private:
         negative_vertex = v;
       }
     }
-    std::string kind, flip_name;
-    std::vector<Cell> old_cells, new_cells;
     if(positive == 3)
     {
-      kind = "two tetrahedra convex";
-      flip_name = "2-3";
-      old_cells = {cd, sorted({f[0], f[1], f[2], e})};
+      r.kind = "two tetrahedra convex";
+      r.flip_name = "2-3";
+      r.old_cells = {cd, sorted({f[0], f[1], f[2], e})};
       for(std::size_t v : f)
       {
         Cell t = cd;
         for(auto& w : t)
           if(w == v) w = e;
-        new_cells.push_back(sorted(t));
+        r.new_cells.push_back(sorted(t));
       }
     }
     else if(positive == 2 && negative == 1)
@@ -582,68 +588,125 @@ private:
       // Concave at the edge (x, y) opposite the negative vertex z; a 3-2 flip if (x, y, d, e) is a cell.
       const auto xy = other_two(f, negative_vertex);
       const Cell third = sorted({xy[0], xy[1], d, e});
-      kind = "concave";
+      r.kind = "concave";
       if(cells_.count(third))
       {
-        kind = "three tetrahedra convex";
-        flip_name = "3-2";
-        old_cells = {cd, sorted({f[0], f[1], f[2], e}), third};
-        new_cells = {sorted({xy[0], negative_vertex, d, e}), sorted({xy[1], negative_vertex, d, e})};
+        r.kind = "three tetrahedra convex";
+        r.flip_name = "3-2";
+        r.old_cells = {cd, sorted({f[0], f[1], f[2], e}), third};
+        r.new_cells = {sorted({xy[0], negative_vertex, d, e}), sorted({xy[1], negative_vertex, d, e})};
       }
     }
     else if(positive == 2 && zero == 1)
-      kind = planar_flip(f, zero_vertex, d, e, old_cells, new_cells, flip_name);
+      r.kind = planar_flip(f, zero_vertex, d, e, r.old_cells, r.new_cells, r.flip_name);
     else if(positive == 1 && negative == 2)
-      kind = five_cells.size() == 4 ? "four tetrahedra" : "concave";
+      r.kind = r.five_cells.size() == 4 ? "four tetrahedra" : "concave";
     else
-      kind = "planar unswappable"; // e on the line of an edge, or in a plane and beyond an edge
-    require(l.at("kind").get<std::string>() == kind, "the configuration is " + kind);
+      r.kind = "planar unswappable"; // e on the line of an edge, or in a plane and beyond an edge
 
     // The rule.
-    std::set<Cell> new_tags;
-    bool swap = false;
     if(strategy_ == "plain")
-      swap = !delaunay && !old_cells.empty();
+      r.swap = !r.delaunay && !r.old_cells.empty();
     else
     {
       // The package's reading: a Delaunay facet whose two cells are untagged is passed over.
-      const bool passed_over = pass_over_ && delaunay && !tags_.count(cd) && !tags_.count(sorted({f[0], f[1], f[2], e}));
+      const Cell ce = sorted({f[0], f[1], f[2], e});
+      const bool passed_over = pass_over_ && r.delaunay && !tags_.count(cd) && !tags_.count(ce);
       if(!passed_over)
       {
-        if(!delaunay)
-          for(const Cell& t : five_cells)
-            if(!tags_.count(t)) new_tags.insert(t);
-        const std::vector<Cell> must_be_tagged =
-          facet_cells_ ? std::vector<Cell>{cd, sorted({f[0], f[1], f[2], e})} : old_cells;
-        if(!old_cells.empty())
+        if(!r.delaunay)
+          for(const Cell& t : r.five_cells)
+            if(!tags_.count(t)) r.new_tags.insert(t);
+        const std::vector<Cell> must_be_tagged = facet_cells_ ? std::vector<Cell>{cd, ce} : r.old_cells;
+        if(!r.old_cells.empty())
           for(const Cell& t : must_be_tagged)
-            if(tags_.count(t) || new_tags.count(t)) swap = true;
+            if(tags_.count(t) || r.new_tags.count(t)) r.swap = true;
       }
     }
-    require(cell_set(l.at("new_tags")) == new_tags, "the tags set are not those the rule sets");
-    tags_.insert(new_tags.begin(), new_tags.end());
-    round_tags_ += new_tags.size();
-    const auto& flip = l.at("flip");
-    if(!swap)
-    {
-      require(flip.is_null() && l.at("created").empty(), "a swap the rule does not make");
-      ++result.visits;
-      return;
-    }
-    require(!flip.is_null(), "a swap the rule makes is missing");
-    require(flip.get<std::string>() == flip_name, "the wrong flip");
-    const std::set<Cell> made(new_cells.begin(), new_cells.end());
-    require(cell_set(l.at("created")) == made, "the flip made other cells");
-    require(volume(new_cells) == volume(old_cells), "the flip does not keep the volume");
-    for(const Cell& t : old_cells) remove_cell(t);
-    for(const Cell& t : new_cells)
+    return r;
+  }
+
+  /// Carries out a decision: its tags, and its flip if it swaps.
+  void apply(const Decision& r)
+  {
+    tags_.insert(r.new_tags.begin(), r.new_tags.end());
+    round_tags_ += r.new_tags.size();
+    if(!r.swap) return;
+    require(volume(r.new_cells) == volume(r.old_cells), "the flip does not keep the volume");
+    for(const Cell& t : r.old_cells) remove_cell(t);
+    for(const Cell& t : r.new_cells)
     {
       oriented(t); // not flat
       add_cell(t);
     }
-    if(sweep_) add_made_facets(new_cells);
+    if(sweep_) add_made_facets(r.new_cells);
     ++round_swaps_;
-    ++result.swaps;
+  }
+
+  /// The apexes of interior facet `f`, the one of the cell that holds it (the
+  /// lexicographically smaller apex) first, as the drivers see a facet.
+  std::pair<std::size_t, std::size_t> apexes(const Facet& f) const
+  {
+    const auto& holders = facets_.at(f);
+    std::size_t d = apex(holders[0], f), e = apex(holders[1], f);
+    if(CGAL::compare_xyz(points_[e], points_[d]) == CGAL::SMALLER) std::swap(d, e);
+    return {d, e};
+  }
+
+  /// The interior facets now.
+  std::vector<Facet> interior_facets() const
+  {
+    std::vector<Facet> out;
+    for(const auto& [f, holders] : facets_)
+      if(holders.size() == 2) out.push_back(f);
+    return out;
+  }
+
+  bool has_interior_facet(const Facet& f) const { return is_interior(f); }
+  const std::set<Cell>& cells() const { return cells_; }
+  const std::set<Cell>& tags() const { return tags_; }
+  const std::vector<Point>& points() const { return points_; }
+  /// Starts a round as the reading says (tags cleared or not), for a program that drives the model.
+  void start_round() { begin_round(); }
+  std::size_t round_swaps() const { return round_swaps_; }
+  std::size_t round_new_tags() const { return round_tags_; }
+  /// Whether a round with these counts ends the run under the reading.
+  bool round_is_idle() const { return round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_); }
+
+private:
+  void visit(const nlohmann::json& l, Result& result)
+  {
+    Facet f;
+    for(int k = 0; k < 3; ++k) f[k] = l.at("facet").at(k).get<std::size_t>();
+    std::sort(f.begin(), f.end());
+    require(is_interior(f), "a visited facet that is not an interior facet now");
+    check_turn(f);
+    const auto& holders = facets_.at(f);
+    const std::size_t d = l.at("apexes").at(0).get<std::size_t>(), e = l.at("apexes").at(1).get<std::size_t>();
+    const std::size_t h0 = apex(holders[0], f), h1 = apex(holders[1], f);
+    require((d == h0 && e == h1) || (d == h1 && e == h0), "the apexes are not those of the facet's cells");
+    const Decision r = decide(f, d, e);
+    require(l.at("delaunay").get<bool>() == r.delaunay, "the in-sphere test says otherwise");
+    require(cell_set(l.at("cells")) == r.five_cells, "the cells of the five points are not these");
+    const auto& tagged_list = l.at("tagged");
+    require(tagged_list.size() == l.at("cells").size(), "a tag flag per cell");
+    for(std::size_t k = 0; k < tagged_list.size(); ++k)
+      require((tagged_list.at(k).get<int>() != 0) == (tags_.count(cell_of(l.at("cells").at(k))) == 1),
+              "a tag read wrongly");
+    require(l.at("kind").get<std::string>() == r.kind, "the configuration is " + r.kind);
+    require(cell_set(l.at("new_tags")) == r.new_tags, "the tags set are not those the rule sets");
+    const auto& flip = l.at("flip");
+    if(!r.swap)
+      require(flip.is_null() && l.at("created").empty(), "a swap the rule does not make");
+    else
+    {
+      require(!flip.is_null(), "a swap the rule makes is missing");
+      require(flip.get<std::string>() == r.flip_name, "the wrong flip");
+      const std::set<Cell> made(r.new_cells.begin(), r.new_cells.end());
+      require(cell_set(l.at("created")) == made, "the flip made other cells");
+      ++result.swaps;
+    }
+    apply(r);
     ++result.visits;
   }
 
@@ -672,7 +735,9 @@ private:
     require(cell_set(l.at("tagged")) == tags_of_cells, "the tags at the round's end differ");
     result.rounds = round;
     last_round_idle_ = round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_);
-    if(order_ == "priority" && !result.loop_certified)
+    // A state that comes back certifies a loop when the visits are a function of
+    // the state (the fixed order) or are chosen (an adversary repeats its choices).
+    if((order_ == "priority" || order_ == "adversarial") && !result.loop_certified)
     {
       const auto state = std::make_pair(cells_, tags_);
       const auto it = seen_.find(state);
