@@ -7,6 +7,7 @@
 #include "test_common.h"
 #include "program_runner.h"
 #include "trace_checker.h"
+#include "adversarial_search.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
@@ -495,16 +496,35 @@ TEST_CASE("Traces: the independent checker confirms every visit of plain and hel
   REQUIRE(checked == runs);
   REQUIRE(sweeps_that_differ > 0); // the fourth option changes runs
 
-  // The fixed order on the work queue too: the helper and the Delaunay repair end on CGAL's triangulation.
+  // The fixed order on the work queue too: the helper and the Delaunay repair
+  // end on CGAL's triangulation, and the run is the same whatever the cells'
+  // addresses. (Fixed: a facet was queued from the cell with the smaller
+  // address, and a flip that destroyed that cell sent it to the next round,
+  // so the helper's run changed with the heap: 24 or 27 rounds, for example.)
   const auto points = ES::point_families::random_integer<Point>(300, 7);
   for(bool helper : {false, true})
   {
-    Tr tr;
-    ES::insert_by_placing(tr, points);
-    const auto np = ES::parameters::face_order(ES::PRIORITY_ORDER, CGAL::parameters::random_seed(5));
-    const auto report = helper ? CGAL::swap_edges_with_helper(tr, np) : CGAL::swap_edges(tr, ES::Delaunay_criterion(), np);
-    REQUIRE(report.ending == ES::CONVERGED);
-    REQUIRE(ES::compare_with_delaunay(tr).identical);
+    std::vector<std::pair<std::size_t, std::size_t>> runs; // rounds, swaps
+    for(std::size_t junk : {0, 20000, 40000})
+    {
+      // Another heap layout: blocks of many sizes, every other one freed.
+      std::vector<std::vector<char>> blocks;
+      for(std::size_t k = 0; k < junk; ++k) blocks.emplace_back(16 + (k * 7919) % 5000);
+      for(std::size_t k = 0; k < blocks.size(); k += 2) std::vector<char>().swap(blocks[k]);
+      Tr tr;
+      ES::insert_by_placing(tr, points);
+      const auto np = ES::parameters::face_order(ES::PRIORITY_ORDER, CGAL::parameters::random_seed(5));
+      const auto report =
+        helper ? CGAL::swap_edges_with_helper(tr, np) : CGAL::swap_edges(tr, ES::Delaunay_criterion(), np);
+      REQUIRE(report.ending == ES::CONVERGED);
+      REQUIRE(ES::compare_with_delaunay(tr).identical);
+      const auto swaps = report.total_swaps();
+      runs.emplace_back(report.number_of_cycles(), swaps[0] + swaps[1] + swaps[2] + swaps[3]);
+    }
+    INFO((helper ? "helper" : "plain") << ": " << runs[0].first << ", " << runs[1].first << ", " << runs[2].first
+                                       << " rounds");
+    REQUIRE(runs[1] == runs[0]);
+    REQUIRE(runs[2] == runs[0]);
   }
 }
 
@@ -625,6 +645,78 @@ TEST_CASE("Traces of degenerate point sets: 2-2 and 4-4 flips and planar configu
     REQUIRE_FALSE(r.ok);
     REQUIRE(r.error.rfind("line " + std::to_string(at + 1) + ":", 0) == 0);
   }
+}
+
+TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points",
+          "[conjectures][traces]")
+{
+  auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
+                      const ES::Helper_reading& reading) {
+    nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
+                     {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000},
+                     {"reading", ES::helper_reading_name(reading)}};
+    for(const Point& p : points) h["points"].push_back({p.x(), p.y(), p.z()});
+    for(const auto& c : cells) h["cells"].push_back({c[0], c[1], c[2], c[3]});
+    return h;
+  };
+  // Five points: every order of every cycle, from every start, under the 18
+  // readings whose made facets wait for the next cycle: the search ends, and
+  // no order loops.
+  std::size_t searched = 0;
+  for(unsigned set = 1; set <= 10; ++set)
+  {
+    const auto points = ES::point_families::random_integer<Point>(5, set);
+    const auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
+    for(const auto& reading : ES::all_helper_readings())
+      if(reading.made_facets == ES::MADE_FACETS_NEXT_CYCLE)
+        for(const auto& cells : starts)
+        {
+          const auto r = adversarial_search::search(header_of(points, cells, reading), 10000);
+          INFO("set " << set << ", " << ES::helper_reading_name(reading));
+          REQUIRE(r.settled);
+          REQUIRE_FALSE(r.loop);
+          ++searched;
+        }
+  }
+  REQUIRE(searched >= 10 * 18);
+
+  // Six points (set 1, the package's reading): from some starts an adversary
+  // loops with 2 swaps in 2 cycles; the kept certificate is that loop's trace.
+  const auto points = ES::point_families::random_integer<Point>(6, 1);
+  const auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
+  REQUIRE(starts.size() == 6);
+  std::size_t loops = 0, fewest = 1000;
+  std::string first_shortest;
+  for(const auto& cells : starts)
+  {
+    const auto r = adversarial_search::search(header_of(points, cells, ES::Helper_reading()), 10000);
+    REQUIRE(r.settled);
+    if(!r.loop) continue;
+    ++loops;
+    const auto check = check_text(r.trace);
+    INFO(check.error);
+    REQUIRE(check.ok);
+    REQUIRE(check.loop_certified);
+    if(r.loop_swaps < fewest)
+    {
+      fewest = r.loop_swaps;
+      first_shortest = r.trace;
+    }
+  }
+  REQUIRE(loops == 3);
+  REQUIRE(fewest == 2);
+  const std::string kept =
+    test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_adversarial_loop_6_points.trace.jsonl");
+  REQUIRE(first_shortest == kept);
+  const auto r = check_text(kept);
+  REQUIRE(r.ok);
+  REQUIRE(r.loop_certified);
+  REQUIRE(r.loop_from == 1);
+  REQUIRE(r.loop_to == 3);
+  // An adversarial trace must still visit listed facets once per round.
+  auto lines = text_lines(kept);
+  lines.insert(lines.begin() + 2, lines[1]);
+  REQUIRE_FALSE(check_text(joined(lines)).ok);
 }
 
 TEST_CASE("The trace checker rejects altered traces, naming the line", "[conjectures][traces]")

@@ -421,6 +421,15 @@ private:
   /// Queues interior facet (c, i) unless it is queued already from either side.
   void queue_facet(Cell_handle c, int i)
   {
+    // From the cell that holds it: a flip that destroys that cell drops the
+    // entry (its facet is queued again behind), so the side must depend on the
+    // state, not on the cells' addresses.
+    if(!holds_facet(tr_, c, i) && !tr_.is_infinite(c) && !tr_.is_infinite(c->neighbor(i)))
+    {
+      const Cell_handle d = c->neighbor(i);
+      i = d->index(c);
+      c = d;
+    }
     const Cell_handle n = c->neighbor(i);
     const std::size_t k = index_(c);
     if(state_at(index_(n)) & (QUEUED << n->index(c))) return;

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The adversarial order class, searched exactly on small point sets: an
+// adversary chooses, in every cycle, the order in which the facets listed at
+// the cycle's start are visited (a listed facet that does not exist at its
+// turn is passed). From a start triangulation, the search enumerates every
+// state (cells and tags) at a cycle's end that some sequence of orders
+// reaches, and for each every state the next cycle can end in (depth first
+// over the facets not yet visited, states already seen cut off). A cycle with
+// no swap (and, with the ending no-swap-no-tag, no new tag) ends the run. A
+// loop is a cycle of transitions with a swap on it; the one with the fewest
+// swaps is written as a trace (order "adversarial"), which the checker
+// certifies by the state that comes back. The rule is the checker's model
+// (`Checker::decide` and `apply`), not the drivers'.
+
+#ifndef EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
+#define EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
+
+#include "trace_checker.h"
+#include <limits>
+#include <map>
+#include <queue>
+#include <set>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace adversarial_search {
+
+using trace_checker::Cell;
+using trace_checker::Checker;
+using trace_checker::Facet;
+
+typedef std::pair<std::set<Cell>, std::set<Cell>> State; // cells, tags
+
+struct Transition
+{
+  std::size_t to;
+  std::size_t swaps;
+  std::vector<Facet> order; // the visits, in the order the adversary chose
+};
+
+struct Search_limit_reached
+{
+};
+
+// Every end of one cycle from `start` (a model at a cycle's end): the state,
+// whether the cycle was idle, its swaps and one order that reaches it.
+struct Cycle_search
+{
+  std::size_t max_nodes;
+  std::size_t nodes = 0;
+  std::set<std::tuple<std::set<Cell>, std::set<Cell>, std::vector<Facet>, bool>> seen;
+  std::map<std::pair<State, bool>, std::pair<std::size_t, std::vector<Facet>>> ends; // -> swaps, order
+
+  void run(const Checker& m, std::vector<Facet> left, bool busy, std::size_t swaps, std::vector<Facet>& order)
+  {
+    if(!seen.insert({m.cells(), m.tags(), left, busy}).second) return;
+    if(++nodes > max_nodes) throw Search_limit_reached();
+    if(left.empty())
+    {
+      const auto key = std::make_pair(State(m.cells(), m.tags()), busy);
+      auto it = ends.find(key);
+      if(it == ends.end() || it->second.first > swaps) ends[key] = {swaps, order};
+      return;
+    }
+    for(std::size_t k = 0; k < left.size(); ++k)
+    {
+      std::vector<Facet> rest = left;
+      rest.erase(rest.begin() + std::ptrdiff_t(k));
+      const Facet f = left[k];
+      order.push_back(f);
+      if(!m.has_interior_facet(f))
+        run(m, rest, busy, swaps, order); // passed: it is not there at its turn
+      else
+      {
+        Checker next = m;
+        const auto [d, e] = next.apexes(f);
+        const Checker::Decision r = next.decide(f, d, e);
+        next.apply(r);
+        run(next, rest, busy || r.swap || !r.new_tags.empty(), swaps + r.swap, order);
+      }
+      order.pop_back();
+    }
+  }
+};
+
+inline nlohmann::json cells_json(const std::set<Cell>& cells)
+{
+  nlohmann::json list = nlohmann::json::array();
+  for(const Cell& t : cells) list.push_back({t[0], t[1], t[2], t[3]});
+  return list;
+}
+
+// The trace of the cycles `path` (the orders) from the start, in the format of traces.md.
+inline std::string write_trace(const nlohmann::json& header, const std::vector<std::vector<Facet>>& path)
+{
+  nlohmann::json h = header;
+  h["max_rounds"] = path.size();
+  std::ostringstream out;
+  out << h.dump() << '\n';
+  Checker m(h);
+  for(std::size_t round = 1; round <= path.size(); ++round)
+  {
+    if(round > 1) m.start_round();
+    for(const Facet& f : path[round - 1])
+    {
+      if(!m.has_interior_facet(f)) continue;
+      const auto [d, e] = m.apexes(f);
+      const Checker::Decision r = m.decide(f, d, e);
+      nlohmann::json line;
+      line["facet"] = {f[0], f[1], f[2]};
+      line["apexes"] = {d, e};
+      line["delaunay"] = r.delaunay;
+      line["kind"] = r.kind;
+      line["cells"] = cells_json(r.five_cells);
+      std::vector<int> tagged;
+      for(const Cell& t : r.five_cells) tagged.push_back(int(m.tags().count(t)));
+      line["tagged"] = tagged;
+      line["new_tags"] = cells_json(r.new_tags);
+      line["flip"] = r.swap ? nlohmann::json(r.flip_name) : nlohmann::json(nullptr);
+      line["created"] = r.swap ? cells_json(std::set<Cell>(r.new_cells.begin(), r.new_cells.end())) : nlohmann::json::array();
+      out << line.dump() << '\n';
+      m.apply(r);
+    }
+    std::set<Cell> tagged;
+    for(const Cell& t : m.tags())
+      if(m.cells().count(t)) tagged.insert(t);
+    out << nlohmann::json{{"round", round}, {"swaps", m.round_swaps()}, {"new_tags", m.round_new_tags()},
+                          {"cells", cells_json(m.cells())}, {"tagged", cells_json(tagged)}}.dump()
+        << '\n';
+  }
+  out << nlohmann::json{{"end", "cycle limit reached"}, {"rounds", path.size()}}.dump() << '\n';
+  return out.str();
+}
+
+struct Loop_found
+{
+  bool settled = false, loop = false;
+  std::size_t states = 0;
+  std::size_t loop_swaps = 0, loop_cycles = 0;
+  std::string trace;
+};
+
+/// The search from the start of `header` (a trace header with its cells),
+/// within `max_states` states at cycles' ends.
+inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
+{
+  Loop_found result;
+  std::vector<Checker> models;
+  std::map<State, std::size_t> index;
+  std::vector<std::vector<Transition>> out;
+  std::vector<std::size_t> parent;
+  std::vector<std::vector<Facet>> parent_order;
+  models.emplace_back(header);
+  index[{models[0].cells(), models[0].tags()}] = 0;
+  out.emplace_back();
+  parent.push_back(0);
+  parent_order.emplace_back();
+  try
+  {
+    for(std::size_t s = 0; s < models.size(); ++s)
+    {
+      Checker m = models[s];
+      m.start_round();
+      Cycle_search cycle{max_states * 64};
+      std::vector<Facet> order;
+      cycle.run(m, m.interior_facets(), false, 0, order);
+      for(const auto& [key, found] : cycle.ends)
+      {
+        if(!key.second) continue; // an idle cycle: the run ends
+        auto [it, added] = index.emplace(key.first, models.size());
+        if(added)
+        {
+          // The model at that state: the start's replayed along the orders.
+          Checker n = models[s];
+          n.start_round();
+          for(const Facet& f : found.second)
+            if(n.has_interior_facet(f))
+            {
+              const auto [d, e] = n.apexes(f);
+              n.apply(n.decide(f, d, e));
+            }
+          models.push_back(n);
+          out.emplace_back();
+          parent.push_back(s);
+          parent_order.push_back(found.second);
+          if(models.size() > max_states) throw Search_limit_reached();
+        }
+        out[s].push_back({it->second, found.first, found.second});
+      }
+    }
+    result.settled = true;
+  }
+  catch(const Search_limit_reached&)
+  {
+  }
+  result.states = models.size();
+  // A loop: a transition u -> v with a swap, and a way back from v to u. The
+  // fewest swaps in all: breadth-first from v counting cycles, then swaps.
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  std::vector<std::vector<Facet>> best_path;
+  for(std::size_t u = 0; u < out.size(); ++u)
+    for(const Transition& t : out[u])
+    {
+      if(t.swaps == 0) continue;
+      std::vector<long> back(models.size(), -1);
+      std::vector<std::size_t> via(models.size());
+      std::queue<std::size_t> q;
+      back[t.to] = long(t.to);
+      q.push(t.to);
+      while(!q.empty() && back[u] < 0)
+      {
+        const std::size_t x = q.front();
+        q.pop();
+        for(std::size_t k = 0; k < out[x].size(); ++k)
+          if(back[out[x][k].to] < 0)
+          {
+            back[out[x][k].to] = long(x);
+            via[out[x][k].to] = k;
+            q.push(out[x][k].to);
+          }
+      }
+      if(back[u] < 0) continue;
+      std::vector<std::vector<Facet>> loop; // u -> t.to -> ... -> u
+      std::size_t swaps = t.swaps;
+      for(std::size_t x = u; x != t.to; x = std::size_t(back[x]))
+      {
+        const Transition& step = out[std::size_t(back[x])][via[x]];
+        loop.insert(loop.begin(), step.order);
+        swaps += step.swaps;
+      }
+      loop.insert(loop.begin(), t.order);
+      if(swaps >= best) continue;
+      best = swaps;
+      std::vector<std::vector<Facet>> lead; // the start -> u
+      for(std::size_t x = u; x != 0; x = parent[x]) lead.insert(lead.begin(), parent_order[x]);
+      best_path = lead;
+      // The loop twice: its first pass ends on the state the second comes back to.
+      for(int pass = 0; pass < 2; ++pass) best_path.insert(best_path.end(), loop.begin(), loop.end());
+      result.loop_cycles = loop.size();
+    }
+  if(!best_path.empty())
+  {
+    result.loop = true;
+    result.loop_swaps = best;
+    result.trace = write_trace(header, best_path);
+  }
+  return result;
+}
+
+} // namespace adversarial_search
+
+#endif // EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
