@@ -15,6 +15,7 @@
 #include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -645,6 +646,61 @@ TEST_CASE("Traces of degenerate point sets: 2-2 and 4-4 flips and planar configu
     REQUIRE_FALSE(r.ok);
     REQUIRE(r.error.rfind("line " + std::to_string(at + 1) + ":", 0) == 0);
   }
+}
+
+TEST_CASE("A certified loop of 6 points under the fixed order for each of the 36 readings, kept as fixtures",
+          "[conjectures][traces]")
+{
+  // fixtures/loops: the first loop benchmark/Edge_swapping_3/smallest_loops.sh
+  // found with 6 points for each reading, its cycle limit cut to the round at
+  // which its state comes back. The library writes each trace again, byte for
+  // byte, and the checker certifies each loop.
+  const std::string folder = std::string(EDGE_SWAPPING_3_FIXTURES) + "/loops";
+  std::set<std::string> readings;
+  for(const auto& entry : std::filesystem::directory_iterator(folder))
+  {
+    const std::string path = entry.path().string();
+    if(entry.path().extension() != ".json") continue;
+    const auto c = ES::IO::read_conjecture_case_file<Point>(path);
+    INFO(path);
+    REQUIRE(c.points.size() == 6);
+    REQUIRE(c.order == ES::PRIORITY_ORDER);
+    std::ostringstream trace;
+    REQUIRE(ES::trace_conjecture_case(c, trace).ending == ES::CYCLE_LIMIT_REACHED);
+    REQUIRE(trace.str() == test::Workdir::slurp(path.substr(0, path.size() - 5) + ".trace.jsonl"));
+    const auto r = check_text(trace.str());
+    REQUIRE(r.ok);
+    REQUIRE(r.loop_certified);
+    REQUIRE(r.loop_to == c.max_cycles);
+    readings.insert(ES::helper_reading_name(c.reading));
+  }
+  REQUIRE(readings.size() == 36);
+}
+
+TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[conjectures][traces]")
+{
+  // With pass-over, a visit that does not pass over has a tagged cell on the
+  // facet (a non-Delaunay visit tags both), and both are cells the flip
+  // removes: so "a tag on one of the facet's cells" is the same rule.
+  for(unsigned seed = 1; seed <= 6; ++seed)
+    for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER, ES::PRIORITY_ORDER})
+    {
+      ES::Conjecture_case<Point> c;
+      c.points = ES::point_families::random_integer<Point>(11, seed);
+      c.start = ES::PLACING_START;
+      c.strategy = ES::HELPER_STRATEGY;
+      c.order = order;
+      c.seed = seed;
+      c.max_cycles = 60;
+      std::ostringstream pass_over, facet_cells;
+      ES::trace_conjecture_case(c, pass_over);
+      c.reading.swap_condition = ES::TAG_ON_FACET_CELLS;
+      ES::trace_conjecture_case(c, facet_cells);
+      const auto a = text_lines(pass_over.str()), b = text_lines(facet_cells.str());
+      INFO("seed " << seed << ", " << ES::face_order_name(order));
+      REQUIRE(a.size() == b.size());
+      REQUIRE(std::equal(a.begin() + 1, a.end(), b.begin() + 1)); // all but the header, which names the reading
+    }
 }
 
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points",

@@ -1,0 +1,22 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The adversarial order class on random integer sets of 5 and 6 points (40
+# sets each), every TOPCOM triangulation as a start, each of the 18 readings
+# whose made facets wait for the next cycle (experiment_adversarial_orders,
+# at most 20,000 states per start). Every loop found is certified by the
+# independent checker. Prints one line per size, set and reading, then per
+# size and reading: starts, starts settled, starts with a loop, sets with a
+# loop, and the fewest swaps in a loop. A few minutes on one core.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+for n in 5 6; do
+  for set in $(seq 1 40); do
+    ./build/bin/experiment_adversarial_orders random-integer:$n:$set all 20000 |
+      awk -v n=$n -v set=$set '/^reading/{print n, set, $0}'
+  done
+done | tee /dev/stderr | awk '
+  { n = $1; r = $4; sub(":", "", r); k = n " " r
+    starts[k] += $5; settled[k] += $7; loops[k] += $9; sets[k] += ($9 > 0)
+    if ($9 > 0) { f = $0; sub(/.*fewest swaps /, "", f); sub(/,.*/, "", f); if (!(k in fewest) || f + 0 < fewest[k]) fewest[k] = f + 0 } }
+  END { print "points reading starts settled with-loop sets-with-loop fewest-swaps"
+        for (k in starts) print k, starts[k], settled[k], loops[k], sets[k], (k in fewest ? fewest[k] : "-") }' | sort
