@@ -55,7 +55,7 @@ void save_last_state(const ES::Conjecture_case<K::Point_3>& c, const std::string
                           number.at(cell->vertex(2)->point()), number.at(cell->vertex(3)->point())});
   nlohmann::json j = ES::IO::conjecture_case_json(last);
   j["state_after_cycles"] = c.max_cycles;
-  std::ofstream(path) << j.dump(1) << '\n';
+  std::ofstream(path) << j.dump() << '\n';
 }
 
 } // namespace

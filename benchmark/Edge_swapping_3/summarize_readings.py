@@ -1,11 +1,15 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Streams the JSON lines of `edge_swap experiment` (any number of files, for
-# example one per shard) and prints, per family, strategy, reading and face
-# order: runs, runs that ended on CGAL's Delaunay triangulation, runs stuck,
-# runs still going at the cycle limit, and from how many start triangulations
-# the helper failed. Reads line by line, so files of tens of millions of lines
-# fit in memory.
+# example one per shard; line by line, so tens of millions of lines fit in
+# memory) and prints a Markdown table: per strategy, behaviour of Algorithm 4
+# and face order, the runs, those that ended on CGAL's Delaunay triangulation,
+# those stuck, and those still going at the cycle limit, by number of points.
+#
+# A behaviour joins the readings that differ only in the ending rule or in
+# pass-over / facet-cells (conjectures.md: they made the same runs). The
+# script checks that claim on the data: each member reading of a row must
+# have the same counts, else it says which row differs.
 #
 #   summarize_readings.py RESULTS.jsonl [MORE.jsonl ...]
 
@@ -16,8 +20,17 @@ import sys
 DEFAULT = "until-destroyed,pass-over,no-swap-no-tag"
 
 
+def behaviour(reading):
+    parts = reading.split(",")
+    made = parts[3] if len(parts) > 3 else "next-cycle"
+    condition = "any-tetrahedron" if parts[1] == "any-tetrahedron" else "pass-over / facet-cells"
+    return (parts[0], condition, made)
+
+
 def main(paths):
-    rows = collections.defaultdict(lambda: [0, 0, 0, 0, set()])
+    rows = collections.defaultdict(collections.Counter)
+    members = collections.defaultdict(lambda: collections.defaultdict(collections.Counter))
+    sizes = set()
     total = 0
     for path in paths:
         with open(path, encoding="utf-8") as f:
@@ -25,22 +38,40 @@ def main(paths):
                 if not line.strip():
                     continue
                 j = json.loads(line)
-                reading = j.get("reading", DEFAULT) if j["strategy"] == "helper" else "-"
-                key = (j["family"], j["points"], j["strategy"], reading, j["order"])
-                row = rows[key]
-                row[0] += 1
-                row[1] += j["equal_to_cgal"]
-                row[2] += j["ending"] == "stuck"
-                row[3] += j["ending"] == "cycle limit reached"
-                if j["failure"]:
-                    row[4].add((j["seed"], j["start"]))
+                if j["strategy"] == "helper":
+                    reading = j.get("reading", DEFAULT)
+                    key = ("helper",) + behaviour(reading) + (j["order"],)
+                else:
+                    reading = "-"
+                    key = (j["strategy"], "-", "-", "-", j["order"])
+                n = j["points"]
+                sizes.add(n)
+                ending = j["ending"]
+                for counter in (rows[key], members[key][reading]):
+                    counter["runs"] += 1
+                    counter["equal"] += j["equal_to_cgal"]
+                    counter["stuck"] += ending == "stuck"
+                    counter["limit"] += ending == "cycle limit reached"
+                    counter["limit %d" % n] += ending == "cycle limit reached"
+                    counter["runs %d" % n] += 1
                 total += 1
-    print("| family | points | strategy | reading | order | runs | ended on CGAL's | stuck | at the cycle limit | starts that failed |")
-    print("|---|---:|---|---|---|---:|---:|---:|---:|---:|")
+    sizes = sorted(sizes)
+    print("| strategy | tag lifetime | swap condition | made facets | order | runs | ended on CGAL's | stuck "
+          "| at the cycle limit, by points (%s) |" % ", ".join(map(str, sizes)))
+    print("|---|---|---|---|---|---:|---:|---:|---|")
+    disagreements = []
     for key in sorted(rows):
         r = rows[key]
-        print("| %s | %d | %s | `%s` | %s | %d | %d | %d | %d | %d |" % (key + (r[0], r[1], r[2], r[3], len(r[4]))))
+        by_size = "; ".join("%d of %d" % (r["limit %d" % n], r["runs %d" % n]) for n in sizes)
+        print("| %s | %s | %s | %s | %s | %d | %d | %d | %s |" % (key + (r["runs"], r["equal"], r["stuck"], by_size)))
+        counts = {tuple(sorted(c.items())) for c in members[key].values()}
+        if len(counts) > 1:
+            disagreements.append(key)
     print("\n%d instances in %d files" % (total, len(paths)))
+    if disagreements:
+        print("readings joined in a row that differ: %s" % disagreements)
+    else:
+        print("in every row, the readings joined had the same counts")
 
 
 if __name__ == "__main__":
