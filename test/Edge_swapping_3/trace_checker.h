@@ -279,13 +279,7 @@ private:
   {
     typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
     CGAL::Cartesian_converter<K, EK> to_exact;
-    EK::FT volume = 0;
-    for(const Cell& t : cells_)
-    {
-      const Cell o = oriented(t);
-      volume += CGAL::volume(to_exact(points_[o[0]]), to_exact(points_[o[1]]), to_exact(points_[o[2]]),
-                             to_exact(points_[o[3]]));
-    }
+    const EK::FT cells_volume = volume(std::vector<Cell>(cells_.begin(), cells_.end()));
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2)
         require(orientation(f[0], f[1], f[2], apex(holders[0], f)) == -orientation(f[0], f[1], f[2], apex(holders[1], f)),
@@ -294,7 +288,7 @@ private:
     for(const Point& p : points_) hull.insert(to_exact(p));
     EK::FT hull_volume = 0;
     for(auto c : hull.finite_cell_handles()) hull_volume += hull.tetrahedron(c).volume();
-    require(volume == hull_volume, "the start's cells do not fill the convex hull once");
+    require(cells_volume == hull_volume, "the start's cells do not fill the convex hull once");
   }
 
   // ---- rounds and the fixed order ----
