@@ -6,7 +6,10 @@
 # at most 20,000 states per start). Every loop found is certified by the
 # independent checker. Prints one line per size, set and reading, then per
 # size and reading: starts, starts settled, starts with a loop, sets with a
-# loop, and the fewest swaps in a loop. A few minutes on one core.
+# loop, the fewest swaps in a loop, the starts from which uniformly random
+# orders end the run with probability one (every state reached can still end
+# it: exact for settled starts), and those from which an end that is not
+# Delaunay can be reached. Under an hour on one core.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 for n in 5 6; do
@@ -17,6 +20,8 @@ for n in 5 6; do
 done | tee /dev/stderr | awk '
   { n = $1; r = $4; sub(":", "", r); k = n " " r
     starts[k] += $5; settled[k] += $7; loops[k] += $9; sets[k] += ($9 > 0)
-    if ($9 > 0) { f = $0; sub(/.*fewest swaps /, "", f); sub(/,.*/, "", f); if (!(k in fewest) || f + 0 < fewest[k]) fewest[k] = f + 0 } }
-  END { print "points reading starts settled with-loop sets-with-loop fewest-swaps"
-        for (k in starts) print k, starts[k], settled[k], loops[k], sets[k], (k in fewest ? fewest[k] : "-") }' | sort
+    if ($9 > 0) { f = $0; sub(/.*fewest swaps /, "", f); sub(/,.*/, "", f); if (!(k in fewest) || f + 0 < fewest[k]) fewest[k] = f + 0 }
+    p = $0; sub(/.*probability one from /, "", p); sub(/;.*/, "", p); surely[k] += p
+    o = $0; sub(/.*is reachable from /, "", o); off[k] += o }
+  END { print "points reading starts settled with-loop sets-with-loop fewest-swaps ends-with-probability-one can-end-off-Delaunay"
+        for (k in starts) print k, starts[k], settled[k], loops[k], sets[k], (k in fewest ? fewest[k] : "-"), surely[k], off[k] }' | sort

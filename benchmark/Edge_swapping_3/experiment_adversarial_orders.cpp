@@ -87,6 +87,7 @@ int main(int argc, char** argv)
   {
     header["reading"] = ES::helper_reading_name(reading);
     std::size_t settled = 0, loops = 0, states = 0, fewest = std::numeric_limits<std::size_t>::max(), fewest_cycles = 0;
+    std::size_t surely = 0, off_delaunay = 0;
     for(std::size_t t = 0; t < all.triangulations.size(); ++t)
     {
       nlohmann::json h = header;
@@ -96,6 +97,8 @@ int main(int argc, char** argv)
       const Loop_found r = adversarial_search::search(h, max_states);
       settled += r.settled;
       states += r.states;
+      surely += r.ends_with_probability_one;
+      off_delaunay += r.can_end_off_delaunay;
       if(!r.loop) continue;
       ++loops;
       // The certificate, confirmed by the checker as any trace is.
@@ -120,7 +123,8 @@ int main(int argc, char** argv)
     std::cout << "reading " << ES::helper_reading_name(reading) << ": " << all.triangulations.size() << " starts, "
               << settled << " settled, " << loops << " with a certified loop";
     if(loops > 0) std::cout << " (fewest swaps " << fewest << ", in " << fewest_cycles << " cycles)";
-    std::cout << ", " << states << " states\n";
+    std::cout << ", " << states << " states; random orders end with probability one from " << surely
+              << "; an end not Delaunay is reachable from " << off_delaunay << "\n";
   }
   if(argc == 5 && !best_trace.empty()) std::ofstream(argv[4]) << best_trace;
   return 0;

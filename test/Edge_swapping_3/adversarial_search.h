@@ -16,6 +16,7 @@
 #define EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
 
 #include "trace_checker.h"
+#include <algorithm>
 #include <limits>
 #include <map>
 #include <queue>
@@ -52,6 +53,8 @@ struct Cycle_search
   std::size_t nodes = 0;
   std::set<std::tuple<std::set<Cell>, std::set<Cell>, std::vector<Facet>, bool>> seen;
   std::map<std::pair<State, bool>, std::pair<std::size_t, std::vector<Facet>>> ends; // -> swaps, order
+  bool can_end = false;               // some order makes this cycle end the run
+  bool can_end_off_delaunay = false;  // ... on a triangulation that is not Delaunay
 
   void run(const Checker& m, std::vector<Facet> left, bool busy, std::size_t swaps, std::vector<Facet>& order)
   {
@@ -59,6 +62,11 @@ struct Cycle_search
     if(++nodes > max_nodes) throw Search_limit_reached();
     if(left.empty())
     {
+      if(!busy)
+      {
+        can_end = true;
+        can_end_off_delaunay = can_end_off_delaunay || !m.is_delaunay();
+      }
       const auto key = std::make_pair(State(m.cells(), m.tags()), busy);
       auto it = ends.find(key);
       if(it == ends.end() || it->second.first > swaps) ends[key] = {swaps, order};
@@ -78,7 +86,9 @@ struct Cycle_search
         const auto [d, e] = next.apexes(f);
         const Checker::Decision r = next.decide(f, d, e);
         next.apply(r);
-        run(next, rest, busy || r.swap || !r.new_tags.empty(), swaps + r.swap, order);
+        // A cycle that only tags ends the run when the reading ends on a cycle without swaps.
+        const bool changed = r.swap || (!r.new_tags.empty() && !m.ends_without_swap());
+        run(next, rest, busy || changed, swaps + r.swap, order);
       }
       order.pop_back();
     }
@@ -137,6 +147,10 @@ inline std::string write_trace(const nlohmann::json& header, const std::vector<s
 struct Loop_found
 {
   bool settled = false, loop = false;
+  /// Settled searches: whether every state reached can still end the run (so
+  /// uniformly random orders, which give every order a positive chance each
+  /// cycle, end it with probability one), and whether some end is not Delaunay.
+  bool ends_with_probability_one = false, can_end_off_delaunay = false;
   std::size_t states = 0;
   std::size_t loop_swaps = 0, loop_cycles = 0;
   std::string trace;
@@ -152,6 +166,7 @@ inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
   std::vector<std::vector<Transition>> out;
   std::vector<std::size_t> parent;
   std::vector<std::vector<Facet>> parent_order;
+  std::vector<char> can_end;
   models.emplace_back(header);
   index[{models[0].cells(), models[0].tags()}] = 0;
   out.emplace_back();
@@ -166,6 +181,9 @@ inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
       Cycle_search cycle{max_states * 64};
       std::vector<Facet> order;
       cycle.run(m, m.interior_facets(), false, 0, order);
+      can_end.resize(models.size());
+      can_end[s] = cycle.can_end;
+      result.can_end_off_delaunay = result.can_end_off_delaunay || cycle.can_end_off_delaunay;
       for(const auto& [key, found] : cycle.ends)
       {
         if(!key.second) continue; // an idle cycle: the run ends
@@ -191,6 +209,22 @@ inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
       }
     }
     result.settled = true;
+    // Every state from which an end is reachable: backwards from the states that can end.
+    std::vector<std::vector<std::size_t>> into(models.size());
+    for(std::size_t u = 0; u < out.size(); ++u)
+      for(const Transition& t : out[u]) into[t.to].push_back(u);
+    std::vector<char> reaches_end(models.size(), 0);
+    std::vector<std::size_t> stack;
+    for(std::size_t u = 0; u < models.size(); ++u)
+      if(can_end[u]) reaches_end[u] = 1, stack.push_back(u);
+    while(!stack.empty())
+    {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      for(std::size_t u : into[v])
+        if(!reaches_end[u]) reaches_end[u] = 1, stack.push_back(u);
+    }
+    result.ends_with_probability_one = std::find(reaches_end.begin(), reaches_end.end(), 0) == reaches_end.end();
   }
   catch(const Search_limit_reached&)
   {

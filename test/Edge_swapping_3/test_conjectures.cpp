@@ -630,6 +630,23 @@ TEST_CASE("Traces of degenerate point sets: 2-2 and 4-4 flips and planar configu
   REQUIRE(flips["2-2"] > 0);
   REQUIRE(flips["4-4"] > 0);
 
+  // A run that goes on after a round that ended it (a copy of the last round's end) is caught.
+  {
+    ES::Conjecture_case<Point> c;
+    c.points = sets[0].second;
+    c.start = ES::PLACING_START;
+    c.strategy = ES::HELPER_STRATEGY;
+    c.order = ES::PRIORITY_ORDER;
+    std::ostringstream trace;
+    REQUIRE(ES::trace_conjecture_case(c, trace).ending == ES::CONVERGED);
+    auto lines = text_lines(trace.str());
+    lines.insert(lines.end() - 1, lines[lines.size() - 2]);
+    const auto r = check_text(joined(lines));
+    REQUIRE_FALSE(r.ok);
+    REQUIRE(r.error == "line " + std::to_string(lines.size() - 1) +
+                         ": a line after a round that ended the run under the reading's ending rule");
+  }
+
   // A 4-4 flip said to be another, or its configuration said to be unswappable, is caught at its line.
   REQUIRE_FALSE(with_four_four.empty());
   auto lines = text_lines(with_four_four);
@@ -703,7 +720,7 @@ TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[
     }
 }
 
-TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points",
+TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points; random orders end with probability one",
           "[conjectures][traces]")
 {
   auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
@@ -731,6 +748,8 @@ TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a cer
           INFO("set " << set << ", " << ES::helper_reading_name(reading));
           REQUIRE(r.settled);
           REQUIRE_FALSE(r.loop);
+          REQUIRE(r.ends_with_probability_one);
+          REQUIRE_FALSE(r.can_end_off_delaunay);
           ++searched;
         }
   }
@@ -747,6 +766,10 @@ TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a cer
   {
     const auto r = adversarial_search::search(header_of(points, cells, ES::Helper_reading()), 10000);
     REQUIRE(r.settled);
+    // An adversary may loop, but from every state it reaches the run can still
+    // end: random orders end it with probability one, on CGAL's triangulation.
+    REQUIRE(r.ends_with_probability_one);
+    REQUIRE_FALSE(r.can_end_off_delaunay);
     if(!r.loop) continue;
     ++loops;
     const auto check = check_text(r.trace);

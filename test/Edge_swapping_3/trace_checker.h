@@ -147,6 +147,8 @@ public:
   void line(const nlohmann::json& l, Result& result)
   {
     require(!ended_, "a line after the end");
+    require(l.contains("end") || result.rounds == 0 || !last_round_idle_,
+            "a line after a round that ended the run under the reading's ending rule");
     if(l.contains("facet"))
       visit(l, result);
     else if(l.contains("round"))
@@ -666,6 +668,10 @@ public:
   std::size_t round_new_tags() const { return round_tags_; }
   /// Whether a round with these counts ends the run under the reading.
   bool round_is_idle() const { return round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_); }
+  /// Whether the reading ends the run after a round without swaps, new tags or not.
+  bool ends_without_swap() const { return end_without_swap_; }
+  /// Whether every interior facet is locally Delaunay (perturbed).
+  bool is_delaunay() const { return all_delaunay(); }
 
 private:
   void visit(const nlohmann::json& l, Result& result)
