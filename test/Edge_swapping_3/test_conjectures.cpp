@@ -379,6 +379,27 @@ TEST_CASE("Shrink keeps a stuck case stuck with fewer points and says the helper
   REQUIRE(j["helper_from_the_same_start"]["equal_to_cgal"].get<bool>());
 }
 
+TEST_CASE("Experiment --readings all: 90 reading-and-order pairs for the helper, the reading in each line",
+          "[conjectures][program]")
+{
+  Workdir w;
+  const Run r = w.run("experiment --families octahedron-centre --seeds 1 --starts topcom --strategies plain,helper "
+                      "--orders storage,random,priority --readings all --threads 1 -o " + w.path("r.jsonl"));
+  INFO("stderr: " << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto lines = json_lines(w.path("r.jsonl"));
+  REQUIRE(lines.size() == 3 + 3 * 36 - 18); // one triangulation; no same-cycle in storage order
+  std::set<std::string> keys, readings;
+  for(const auto& j : lines)
+  {
+    keys.insert(j["key"].get<std::string>());
+    REQUIRE(j["equal_to_cgal"].get<bool>());
+    if(j.contains("reading")) readings.insert(j["reading"].get<std::string>());
+  }
+  REQUIRE(keys.size() == lines.size());
+  REQUIRE(readings.size() == 35); // the package's reading is not written
+}
+
 TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjectures][program]")
 {
   Workdir w;
@@ -387,6 +408,9 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
       {"experiment --seeds 5-2 -o " + w.path("o.jsonl"), "--seeds"},
       {"experiment --shard 3/3 -o " + w.path("o.jsonl"), "--shard"},
       {"experiment --strategies nothing -o " + w.path("o.jsonl"), "unknown strategy"},
+      {"experiment --readings \"until-destroyed,pass-over\" -o " + w.path("o.jsonl"),
+       "--readings: unknown reading 'until-destroyed,pass-over'"},
+      {"experiment --readings \"all;\" -o " + w.path("o.jsonl"), "--readings: unknown reading 'all'"},
       {"experiment --starts topcom --families random-cube --sizes 8 -o " + w.path("o.jsonl"), "integer coordinates"},
       {"experiment --families \"\" --points-file " + w.path("three.node") + " -o " + w.path("o.jsonl"),
        "fewer than four points"},
