@@ -241,6 +241,193 @@ TEST_CASE("Experiment: every triangulation of the cube from TOPCOM and both stra
   REQUIRE(cube == 74 * 4);
 }
 
+TEST_CASE("TOPCOM streamed: each triangulation as it comes, the same as the list, stopped early without waiting",
+          "[conjectures]")
+{
+  const auto points = ES::make_point_family<Point>("cube-corners", 8, 1);
+  const auto all = ES::IO::topcom_triangulations(points, 1000);
+  REQUIRE(all.triangulations.size() == 74);
+  REQUIRE(!all.truncated);
+  std::size_t seen = 0;
+  REQUIRE(ES::IO::for_each_topcom_triangulation(points, 1000, [&](std::size_t t, const auto& cells) {
+            REQUIRE(t == seen++);
+            REQUIRE(cells == all.triangulations[t]);
+            return true;
+          }) == 74);
+  REQUIRE(ES::IO::for_each_topcom_triangulation(points, 1000, [&](std::size_t t, const auto&) { return t < 4; }) == 5);
+  REQUIRE(ES::IO::for_each_topcom_triangulation(points, 10, [&](std::size_t, const auto&) { return true; }) == 10);
+  REQUIRE(ES::IO::topcom_triangulations(points, 10).truncated);
+  // A large enumeration (the 3x3x2 grid has millions) stopped after one: TOPCOM is not waited for.
+  REQUIRE(ES::IO::for_each_topcom_triangulation(ES::make_point_family<Point>("grid-3x3x2", 18, 1), 1000,
+                                                [&](std::size_t, const auto&) { return false; }) == 1);
+}
+
+namespace {
+
+std::vector<std::string> text_lines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for(std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& lines)
+{
+  std::string text;
+  for(const auto& l : lines) text += l + '\n';
+  return text;
+}
+
+// The counts of the tallies of a streamed file, by "strategy|order", and
+// the triangulations each set's tallies cover (each must be covered once).
+struct Stream_totals
+{
+  std::map<std::string, std::array<std::size_t, 5>> rows; // instances, converged, stuck, limit, equal
+  std::map<std::string, std::vector<std::size_t>> covered;
+  std::set<std::string> complete;
+  std::size_t tallies = 0;
+};
+
+Stream_totals stream_totals(const std::vector<nlohmann::json>& lines)
+{
+  Stream_totals s;
+  for(const auto& j : lines)
+  {
+    if(!j.contains("tally")) continue;
+    ++s.tallies;
+    const auto& t = j["tally"];
+    const std::string set = t["set"];
+    auto& cover = s.covered[set];
+    const std::size_t first = t["first"], count = t["count"];
+    if(cover.size() < first + count) cover.resize(first + count, 0);
+    for(std::size_t k = first; k < first + count; ++k) ++cover[k];
+    if(t["complete"].get<bool>()) s.complete.insert(set);
+    for(const auto& r : t["rows"])
+    {
+      auto& row = s.rows[r["strategy"].get<std::string>() + "|" + r["order"].get<std::string>()];
+      row[0] += r["instances"].get<std::size_t>(), row[1] += r["converged"].get<std::size_t>();
+      row[2] += r["stuck"].get<std::size_t>(), row[3] += r["limit"].get<std::size_t>();
+      row[4] += r["equal"].get<std::size_t>();
+    }
+  }
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("Experiment --stream: TOPCOM's triangulations streamed in batches, the same counts as the list, resumed, "
+          "sharded", "[conjectures][program]")
+{
+  Workdir w;
+  const std::string args = "experiment --families random-integer --sizes 8 --seeds 1-2 --starts topcom "
+                           "--strategies plain,helper --orders storage,random,priority --max-cycles 200 --threads 2 ";
+  // The list: one line per instance.
+  const Run listed = w.run(args + "-o " + w.path("list.jsonl"));
+  INFO("stderr: " << listed.err);
+  REQUIRE(listed.exit_code == 0);
+  const auto list = json_lines(w.path("list.jsonl"));
+  std::map<std::string, std::array<std::size_t, 5>> expected;
+  std::set<std::string> not_delaunay;
+  std::map<std::string, std::size_t> triangulations;
+  for(const auto& j : list)
+  {
+    auto& row = expected[j["strategy"].get<std::string>() + "|" + j["order"].get<std::string>()];
+    const std::string ending = j["ending"];
+    row[0] += 1, row[1] += ending == "converged", row[2] += ending == "stuck", row[3] += ending == "cycle limit reached";
+    row[4] += j["equal_to_cgal"].get<bool>();
+    if(ending != "converged" || !j["equal_to_cgal"].get<bool>()) not_delaunay.insert(j["key"].get<std::string>());
+    const std::string set = "random-integer|8|" + std::to_string(j["seed"].get<unsigned>());
+    triangulations[set] = (std::max)(triangulations[set], std::stoul(j["start"].get<std::string>().substr(7)) + 1);
+  }
+  REQUIRE(triangulations == std::map<std::string, std::size_t>{{"random-integer|8|1", 132}, {"random-integer|8|2", 123}});
+  REQUIRE(!not_delaunay.empty()); // the helper loops in priority order from some start
+
+  auto require_same_as_list = [&](const std::vector<nlohmann::json>& lines) {
+    const Stream_totals s = stream_totals(lines);
+    REQUIRE(s.rows == expected);
+    REQUIRE(s.complete == std::set<std::string>{"random-integer|8|1", "random-integer|8|2"});
+    for(const auto& [set, cover] : s.covered)
+    {
+      INFO(set);
+      REQUIRE(cover == std::vector<std::size_t>(triangulations.at(set), 1));
+    }
+    std::set<std::string> lined;
+    for(const auto& j : lines)
+      if(j.contains("key")) REQUIRE(lined.insert(j["key"].get<std::string>()).second);
+    REQUIRE(lined == not_delaunay);
+  };
+
+  // Streamed in batches of 50: a tally per batch, a line per run not ending on CGAL's triangulation.
+  const std::string stream = args + "--stream --stream-batch 50 ";
+  const Run streamed = w.run(stream + "-o " + w.path("stream.jsonl"));
+  INFO("stderr: " << streamed.err);
+  REQUIRE(streamed.exit_code == 0);
+  REQUIRE(streamed.out.find("random-integer|8|1: 132 triangulations run of 132 (all)") != std::string::npos);
+  const auto lines = json_lines(w.path("stream.jsonl"));
+  REQUIRE(lines.front()["stream"]["batch"] == 50);
+  REQUIRE(stream_totals(lines).tallies == 3 + 3);
+  require_same_as_list(lines);
+
+  SECTION("A run stopped in a batch resumes after its last tally")
+  {
+    // Keep the first line and the first two batches, then a batch's lines without
+    // its tally and a line cut short, as a stop leaves them.
+    std::vector<std::string> text = text_lines(Workdir::slurp(w.path("stream.jsonl")));
+    std::size_t tallies = 0, keep = 0;
+    for(; keep < text.size() && tallies < 2; ++keep) tallies += text[keep].find("\"tally\"") != std::string::npos;
+    std::string cut = joined(std::vector<std::string>(text.begin(), text.begin() + std::ptrdiff_t(keep)));
+    cut += list.back().dump() + "\n" + list.front().dump().substr(0, 30);
+    w.write("resumed.jsonl", cut);
+    const Run resumed = w.run(stream + "-o " + w.path("resumed.jsonl"));
+    INFO("stderr: " << resumed.err);
+    REQUIRE(resumed.exit_code == 0);
+    require_same_as_list(json_lines(w.path("resumed.jsonl")));
+    // Run again, nothing is left to do and nothing is added.
+    const std::string before = Workdir::slurp(w.path("resumed.jsonl"));
+    REQUIRE(w.run(stream + "-o " + w.path("resumed.jsonl")).exit_code == 0);
+    REQUIRE(Workdir::slurp(w.path("resumed.jsonl")) == before);
+  }
+  SECTION("Two shards share the batches")
+  {
+    std::vector<nlohmann::json> both;
+    for(const char* shard : {"0/2", "1/2"})
+    {
+      const std::string out = w.path(std::string("shard") + shard[0] + ".jsonl");
+      const Run r = w.run(stream + "--shard " + shard + " -o " + out);
+      INFO("stderr: " << r.err);
+      REQUIRE(r.exit_code == 0);
+      const auto part = json_lines(out);
+      REQUIRE(stream_totals(part).rows != expected);
+      both.insert(both.end(), part.begin(), part.end());
+    }
+    require_same_as_list(both);
+  }
+  SECTION("A file of other options, or with a bad line, is refused and left as it was")
+  {
+    Run r = w.run(args + "--stream --stream-batch 60 -o " + w.path("stream.jsonl"));
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find("was written with other options") != std::string::npos);
+    std::vector<std::string> text = text_lines(Workdir::slurp(w.path("stream.jsonl")));
+    for(const auto& [line, what] : std::vector<std::pair<std::string, std::string>>{
+            {"{\"tally\": {\"set\": 1}}", ":3: a bad tally"}, {"[1,2", ":3: not a JSON line"}, {"{}", ":3: not a results line"}})
+    {
+      std::vector<std::string> bad = text;
+      bad.insert(bad.begin() + 2, line);
+      w.write("bad.jsonl", joined(bad));
+      r = w.run(stream + "-o " + w.path("bad.jsonl"));
+      INFO(line << "\nstderr: " << r.err);
+      REQUIRE(r.exit_code == 2);
+      REQUIRE(r.err.find("bad.jsonl" + what) != std::string::npos);
+      REQUIRE(Workdir::slurp(w.path("bad.jsonl")) == joined(bad));
+    }
+    w.write("bad.jsonl", joined(std::vector<std::string>(text.begin() + 1, text.end())));
+    r = w.run(stream + "-o " + w.path("bad.jsonl"));
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find("bad.jsonl:1: not a file of experiment --stream") != std::string::npos);
+  }
+}
+
 TEST_CASE("The laboratory from C++: TOPCOM starts, both strategies, a shrink and a replay, without the program",
           "[conjectures]")
 {
@@ -415,6 +602,15 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
       {"experiment --families \"\" --points-file " + w.path("three.node") + " -o " + w.path("o.jsonl"),
        "fewer than four points"},
       {"experiment --points-file " + w.path("missing.node") + " -o " + w.path("o.jsonl"), "missing.node"},
+      {"experiment --stream --starts placing -o " + w.path("o.jsonl"), "--stream needs --starts topcom"},
+      {"experiment --stream --starts topcom --families random-cube --sizes 8 -o " + w.path("o.jsonl"),
+       "integer coordinates"},
+      {"experiment --stream --starts topcom --families cube-corners --stream-batch 0 -o " + w.path("o.jsonl"),
+       "--stream-batch is from 1"},
+      {"experiment --stream --starts topcom --families cube-corners --strategies insertion -o " + w.path("o.jsonl"),
+       "the insertion strategy has none"},
+      {"experiment --stream --starts topcom --families cube-corners --topcom-limit 0 -o " + w.path("o.jsonl"),
+       "--topcom-limit"},
       {"shrink " + w.path("missing.json") + " -o " + w.path("s.json"), "missing.json: cannot open the file"},
       {"shrink " + w.path("bad.json") + " -o " + w.path("s.json"), "not JSON"},
       {"shrink " + w.path("null.json") + " -o " + w.path("s.json"), "bad case file"},
@@ -437,21 +633,6 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
 }
 
 namespace {
-
-std::vector<std::string> text_lines(const std::string& text)
-{
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for(std::string l; std::getline(in, l);) lines.push_back(l);
-  return lines;
-}
-
-std::string joined(const std::vector<std::string>& lines)
-{
-  std::string text;
-  for(const auto& l : lines) text += l + '\n';
-  return text;
-}
 
 trace_checker::Result check_text(const std::string& text)
 {

@@ -4,11 +4,14 @@
 // cores, appends one JSON line per instance to the output (so a stopped run
 // resumes where it was: finished instances are skipped), and prints a summary
 // of the whole file. `--shard I/N` keeps the instances whose number is I
-// modulo N, so that N jobs of a scheduler split one experiment.
+// modulo N, so that N jobs of a scheduler split one experiment. With
+// --stream, TOPCOM starts are streamed instead (experiment_stream.h).
 
 #ifndef EDGE_SWAP_EXPERIMENT_COMMAND_H
 #define EDGE_SWAP_EXPERIMENT_COMMAND_H
 
+#include "experiment_options.h"
+#include "experiment_stream.h"
 #include "output_files.h"
 #include "types.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -28,62 +31,6 @@
 
 namespace edge_swap {
 
-struct Experiment_options
-{
-  std::vector<std::string> families{"random-cube"};
-  std::vector<std::size_t> sizes{100};
-  std::string seeds = "1-10";
-  std::vector<std::string> starts{"placing"};
-  std::vector<std::string> strategies{"plain", "helper"};
-  std::vector<std::string> orders{"random"};
-  std::string readings; // the helper's, separated by ';', or "all"
-  std::vector<std::string> point_files;
-  std::string output;
-  std::string shard = "0/1";
-  unsigned threads = 0;
-  std::size_t max_cycles = 1000;
-  std::string cases_dir;
-  std::size_t stuck_case_max_points = 50;
-  std::size_t topcom_limit = 100000;
-};
-
-namespace internal_experiment {
-
-inline std::pair<unsigned, unsigned> parse_range(const std::string& s, const std::string& what)
-{
-  const auto dash = s.find('-');
-  const unsigned long long a = whole_number(s.substr(0, dash), what, 4000000000ULL);
-  const unsigned long long b = dash == std::string::npos ? a : whole_number(s.substr(dash + 1), what, 4000000000ULL);
-  if(b < a) throw Usage_error(what + " '" + s + "' is not N or A-B with A <= B");
-  return {unsigned(a), unsigned(b)};
-}
-
-inline std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
-{
-  const auto slash = s.find('/');
-  if(slash == std::string::npos) throw Usage_error("--shard '" + s + "' is not I/N with 0 <= I < N");
-  const std::size_t i = whole_number(s.substr(0, slash), "--shard I/N"), n = whole_number(s.substr(slash + 1), "--shard I/N");
-  if(n == 0 || i >= n) throw Usage_error("--shard '" + s + "' is not I/N with 0 <= I < N");
-  return {i, n};
-}
-
-inline std::vector<Point> read_point_file(const std::string& path)
-{
-  std::vector<Point> points;
-  for(const auto& p : IO::read_node_file(path).points) points.emplace_back(p[0], p[1], p[2]);
-  const std::string problem = ES::point_set_problem(points);
-  if(!problem.empty()) throw Usage_error(path + ": " + problem);
-  return points;
-}
-
-inline std::string file_safe(std::string s)
-{
-  for(char& ch : s)
-    if(!std::isalnum(static_cast<unsigned char>(ch)) && ch != '-' && ch != '.') ch = '_';
-  return s;
-}
-
-} // namespace internal_experiment
 
 inline int run_experiment(const Experiment_options& opt)
 {
@@ -175,6 +122,7 @@ inline int run_experiment(const Experiment_options& opt)
                             std::to_string(experiment.first_seed) + "): " + problem);
       }
   }
+  if(opt.stream) return run_streamed_experiment(opt, experiment, shard, shards);
   // The results already there are checked before anything is appended; a
   // line cut short by a stop is removed, so that appending starts on a new line.
   const bool existed = std::filesystem::exists(opt.output);
@@ -218,29 +166,8 @@ inline int run_experiment(const Experiment_options& opt)
   // One instance at a time: its results line, and its case file when it failed or is a small stuck one.
   auto record = [&](const ES::Conjecture_instance& in, const ES::Conjecture_case<Point>& c, const ES::Conjecture_outcome& o) {
     const bool failure = ES::is_counterexample(c, o);
-    nlohmann::json j = {{"key", in.key()},
-                        {"family", in.family},
-                        {"size", in.size},
-                        {"points", c.points.size()},
-                        {"seed", in.seed},
-                        {"start", in.start},
-                        {"strategy", ES::conjecture_strategy_name(in.strategy)},
-                        {"order", ES::face_order_name(in.order)},
-                        {"failure", failure}};
-    if(!in.reading.is_default()) j["reading"] = ES::helper_reading_name(in.reading);
-    j.update(IO::conjecture_outcome_json(o));
-    if(!opt.cases_dir.empty() &&
-       (failure || (!o.bad_start && o.ending == ES::STUCK && c.points.size() <= opt.stuck_case_max_points)))
-    {
-      const std::string saved = opt.cases_dir + "/" + (failure ? "failure-" : "stuck-") + file_safe(in.key()) + ".json";
-      nlohmann::json file = IO::conjecture_case_json(c);
-      file["outcome"] = IO::conjecture_outcome_json(o);
-      file["instance"] = in.key();
-      std::ofstream case_file(saved);
-      case_file << file.dump(1) << '\n';
-      case_file.close();
-      if(!case_file) throw Usage_error("cannot write '" + saved + "'");
-    }
+    const nlohmann::json j = instance_line(in, c, o);
+    save_case_if_wanted(opt, in, c, o);
     errno = 0;
     out << j.dump() << '\n' << std::flush;
     if(!out)

@@ -103,7 +103,12 @@ int main(int argc, char** argv)
   experiment->add_option("--shard", exp.shard, "I/N: run only the instances numbered I modulo N");
   experiment->add_option("--cases", exp.cases_dir, "folder for the failing cases and the small stuck ones (to shrink)");
   experiment->add_option("--stuck-case-max-points", exp.stuck_case_max_points, "save stuck plain runs up to this size");
-  experiment->add_option("--topcom-limit", exp.topcom_limit, "at most this many TOPCOM triangulations per point set");
+  auto* topcom_limit = experiment->add_option("--topcom-limit", exp.topcom_limit,
+                                              "at most this many TOPCOM triangulations per point set (default 100000; "
+                                              "none with --stream)")->check(CLI::PositiveNumber);
+  experiment->add_flag("--stream", exp.stream, "stream TOPCOM's triangulations in batches: one tally line per batch, "
+                                               "a line only for runs not ending on CGAL's triangulation");
+  experiment->add_option("--stream-batch", exp.stream_batch, "with --stream: triangulations per batch (default 4096)");
 
   Shrink_options shr;
   auto* shrink = app.add_subcommand("shrink", "remove points from a saved case while it still fails");
@@ -153,7 +158,11 @@ int main(int argc, char** argv)
     if(*refine) return run_refine(ref);
     if(*stats) return run_stats(stats_path, stats_json);
     if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
-    if(*experiment) return run_experiment(exp);
+    if(*experiment)
+    {
+      exp.topcom_limit_given = topcom_limit->count() > 0;
+      return run_experiment(exp);
+    }
     if(*shrink) return run_shrink(shr);
     if(*replay) return run_replay(replay_path, replay_cycles, replay_trace);
     return run_demo(demo_points, demo_seed);

@@ -46,56 +46,61 @@ void write_topcom_points(std::ostream& os, const std::vector<Point>& points)
   os << "]\n";
 }
 
-/// Reads the triangulations TOPCOM printed (`points2allfinetriangs` and the
-/// like). Lines that are not triangulations are skipped; a malformed
-/// triangulation line throws, naming the line.
+/// Reads one line that TOPCOM printed (`points2allfinetriangs` and the
+/// like) into `cells`: false for a line that is not a triangulation (it is
+/// skipped); a malformed triangulation line throws, naming `line_number`.
+inline bool read_topcom_triangulation_line(const std::string& line, std::size_t line_number,
+                                           std::vector<std::array<std::size_t, 4>>& cells)
+{
+  const auto assign = line.find(":=");
+  if(line.rfind("T[", 0) != 0 || assign == std::string::npos) return false;
+  auto fail = [&](const std::string& what) {
+    throw Input_error("TOPCOM output line " + std::to_string(line_number) + ": " + what);
+  };
+  cells.clear();
+  std::size_t pos = line.find('{', assign);
+  if(pos == std::string::npos) fail("no '{'");
+  ++pos;
+  for(;;)
+  {
+    pos = line.find_first_not_of(" ,", pos);
+    if(pos == std::string::npos) fail("unterminated");
+    if(line[pos] == '}') break;
+    if(line[pos] != '{') fail("expected '{' at column " + std::to_string(pos + 1));
+    const std::size_t close = line.find('}', pos);
+    if(close == std::string::npos) fail("unterminated simplex");
+    std::array<std::size_t, 4> cell{};
+    std::size_t count = 0, k = pos + 1;
+    while(k < close)
+    {
+      k = line.find_first_not_of(" ,", k);
+      if(k >= close) break;
+      // A point index: digits only (no sign), in range of std::size_t.
+      const std::size_t stop = std::min(close, line.find_first_of(" ,", k));
+      std::size_t value = 0;
+      const auto [ptr, ec] = std::from_chars(line.data() + k, line.data() + stop, value);
+      if(ec != std::errc() || ptr != line.data() + stop || line[k] == '-' || line[k] == '+')
+        fail("bad index at column " + std::to_string(k + 1));
+      if(count == 4) fail("a simplex with more than four points");
+      cell[count++] = value;
+      k = stop;
+    }
+    if(count != 4) fail("a simplex with " + std::to_string(count) + " points");
+    cells.push_back(cell);
+    pos = close + 1;
+  }
+  return true;
+}
+
+/// Reads every triangulation TOPCOM printed (see `read_topcom_triangulation_line()`).
 inline std::vector<std::vector<std::array<std::size_t, 4>>> read_topcom_triangulations(std::istream& is)
 {
   std::vector<std::vector<std::array<std::size_t, 4>>> result;
+  std::vector<std::array<std::size_t, 4>> cells;
   std::string line;
   std::size_t line_number = 0;
   while(std::getline(is, line))
-  {
-    ++line_number;
-    const auto assign = line.find(":=");
-    if(line.rfind("T[", 0) != 0 || assign == std::string::npos) continue;
-    auto fail = [&](const std::string& what) {
-      throw Input_error("TOPCOM output line " + std::to_string(line_number) + ": " + what);
-    };
-    std::vector<std::array<std::size_t, 4>> cells;
-    std::size_t pos = line.find('{', assign);
-    if(pos == std::string::npos) fail("no '{'");
-    ++pos;
-    for(;;)
-    {
-      pos = line.find_first_not_of(" ,", pos);
-      if(pos == std::string::npos) fail("unterminated");
-      if(line[pos] == '}') break;
-      if(line[pos] != '{') fail("expected '{' at column " + std::to_string(pos + 1));
-      const std::size_t close = line.find('}', pos);
-      if(close == std::string::npos) fail("unterminated simplex");
-      std::array<std::size_t, 4> cell{};
-      std::size_t count = 0, k = pos + 1;
-      while(k < close)
-      {
-        k = line.find_first_not_of(" ,", k);
-        if(k >= close) break;
-        // A point index: digits only (no sign), in range of std::size_t.
-        const std::size_t stop = std::min(close, line.find_first_of(" ,", k));
-        std::size_t value = 0;
-        const auto [ptr, ec] = std::from_chars(line.data() + k, line.data() + stop, value);
-        if(ec != std::errc() || ptr != line.data() + stop || line[k] == '-' || line[k] == '+')
-          fail("bad index at column " + std::to_string(k + 1));
-        if(count == 4) fail("a simplex with more than four points");
-        cell[count++] = value;
-        k = stop;
-      }
-      if(count != 4) fail("a simplex with " + std::to_string(count) + " points");
-      cells.push_back(cell);
-      pos = close + 1;
-    }
-    result.push_back(std::move(cells));
-  }
+    if(read_topcom_triangulation_line(line, ++line_number, cells)) result.push_back(cells);
   return result;
 }
 

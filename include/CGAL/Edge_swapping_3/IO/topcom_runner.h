@@ -7,6 +7,7 @@
 
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
 #include <cstdio>
+#include <stdio.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -40,40 +41,80 @@ inline std::string topcom_program()
 }
 
 /// \ingroup PkgEdgeSwapping3IO
-/// Every fine triangulation of `points` (integer coordinates; at most
-/// `limit`), enumerated by TOPCOM in files of the temporary folder that are
-/// removed on every path out. Throws `std::invalid_argument` for points that
-/// TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails.
-template <class Point>
-Topcom_triangulations topcom_triangulations(const std::vector<Point>& points, std::size_t limit)
+/// Streams every fine triangulation of `points` (integer coordinates) as
+/// TOPCOM enumerates it, without holding them: calls `visit(index, cells)`
+/// for each (`cells`: its tetrahedra, 0-based point indices), until
+/// `visit` returns false or `limit` have been visited. Returns the number
+/// visited. TOPCOM reads its input from a file of the temporary folder that
+/// is removed on every path out. Throws `std::invalid_argument` for points
+/// that TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails,
+/// and what `visit` throws.
+template <class Point, class Visit>
+std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std::size_t limit, Visit visit)
 {
   const std::string program = topcom_program();
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string stem = (dir / ("edge_swapping_3_topcom_" + std::to_string(::getpid()) + "_" +
-                                   std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()))))
-                               .string();
+  const std::string input = (dir / ("edge_swapping_3_topcom_" + std::to_string(::getpid()) + "_" +
+                                    std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".in"))
+                                .string();
   struct Remove_on_exit
   {
-    std::string stem;
-    ~Remove_on_exit()
-    {
-      std::remove((stem + ".in").c_str());
-      std::remove((stem + ".out").c_str());
-    }
-  } remove_on_exit{stem};
+    const std::string& path;
+    ~Remove_on_exit() { std::remove(path.c_str()); }
+  } remove_on_exit{input};
   {
-    std::ofstream in(stem + ".in");
+    std::ofstream in(input);
     write_topcom_points(in, points);
     in.close();
-    if(!in) throw std::runtime_error("cannot write TOPCOM's input '" + stem + ".in'");
+    if(!in) throw std::runtime_error("cannot write TOPCOM's input '" + input + "'");
   }
-  const std::string command = program + " < '" + stem + ".in' 2> /dev/null | head -n " + std::to_string(limit) +
-                              " > '" + stem + ".out'";
-  const int status = std::system(command.c_str());
-  std::ifstream out(stem + ".out");
+  const std::string command = program + " < '" + input + "' 2> /dev/null";
+  // Closed on every path out; a TOPCOM still writing when we stop ends on SIGPIPE.
+  struct Pipe
+  {
+    FILE* file;
+    char* buffer = nullptr;
+    ~Pipe()
+    {
+      std::free(buffer);
+      if(file) ::pclose(file);
+    }
+  } pipe{::popen(command.c_str(), "r")};
+  if(!pipe.file) throw std::runtime_error("cannot start TOPCOM: " + command);
+  std::size_t capacity = 0, line_number = 0, visited = 0;
+  std::vector<std::array<std::size_t, 4>> cells;
+  bool stopped = false;
+  for(ssize_t length; visited < limit && (length = ::getline(&pipe.buffer, &capacity, pipe.file)) >= 0;)
+  {
+    std::string line(pipe.buffer, std::size_t(length));
+    if(!line.empty() && line.back() == '\n') line.pop_back();
+    if(!read_topcom_triangulation_line(line, ++line_number, cells)) continue;
+    if(!visit(visited++, cells))
+    {
+      stopped = true;
+      break;
+    }
+  }
+  if(visited < limit && !stopped)
+  {
+    const int status = ::pclose(pipe.file);
+    pipe.file = nullptr;
+    if(status != 0 && visited == 0) throw std::runtime_error("TOPCOM failed: " + command);
+  }
+  return visited;
+}
+
+/// \ingroup PkgEdgeSwapping3IO
+/// Every fine triangulation of `points` (integer coordinates; at most
+/// `limit`), held in memory; see `for_each_topcom_triangulation()`.
+template <class Point>
+Topcom_triangulations topcom_triangulations(const std::vector<Point>& points, std::size_t limit)
+{
   Topcom_triangulations result;
-  result.triangulations = read_topcom_triangulations(out);
-  if(status != 0 && result.triangulations.empty()) throw std::runtime_error("TOPCOM failed: " + command);
+  for_each_topcom_triangulation(points, limit, [&](std::size_t, const std::vector<std::array<std::size_t, 4>>& cells) {
+    result.triangulations.push_back(cells);
+    return true;
+  });
   result.truncated = result.triangulations.size() >= limit;
   return result;
 }

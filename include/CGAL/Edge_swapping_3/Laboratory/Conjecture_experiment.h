@@ -95,7 +95,28 @@ struct Conjecture_instances
   std::vector<Conjecture_instance> instances; ///< in the order every shard and resume sees
   /// By point set ("family|size|seed"): the triangulations of its "topcom:I" starts.
   std::map<std::string, std::vector<std::vector<std::array<std::size_t, 4>>>> topcom_cells;
+  /// By point set: the number of its first triangulation in `topcom_cells`
+  /// (0 when absent; a stream of triangulations holds one batch at a time).
+  std::map<std::string, std::size_t> topcom_first;
 };
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// Appends to `out` the instances of `experiment` from one start of one
+/// point set: each strategy other than insertion, in each face order and
+/// (the helper) each reading, except same-cycle readings in storage order.
+template <class Point>
+void append_start_instances(const Conjecture_experiment<Point>& experiment, const std::string& family,
+                            std::size_t size, unsigned seed, const std::string& start,
+                            std::vector<Conjecture_instance>& out)
+{
+  for(Conjecture_strategy strategy : experiment.strategies)
+    if(strategy != INSERTION_WITH_PLAIN_SWAPS)
+      for(Face_order order : experiment.orders)
+        for(const Helper_reading& reading :
+            strategy == HELPER_STRATEGY ? experiment.readings : std::vector<Helper_reading>{Helper_reading()})
+          if(order != STORAGE_ORDER || reading.made_facets != MADE_FACETS_SAME_CYCLE)
+            out.push_back({family, size, seed, start, strategy, order, reading});
+}
 
 /// \ingroup PkgEdgeSwapping3Laboratory
 /// The instances of `experiment`, always in the same order. A "topcom" start
@@ -125,14 +146,8 @@ Conjecture_instances conjecture_instances(const Conjecture_experiment<Point>& ex
             count = cells.size();
           }
           for(std::size_t t = 0; t < count; ++t)
-            for(Conjecture_strategy strategy : experiment.strategies)
-              if(strategy != INSERTION_WITH_PLAIN_SWAPS)
-                for(Face_order order : experiment.orders)
-                  for(const Helper_reading& reading :
-                      strategy == HELPER_STRATEGY ? experiment.readings : std::vector<Helper_reading>{Helper_reading()})
-                    if(order != STORAGE_ORDER || reading.made_facets != MADE_FACETS_SAME_CYCLE)
-                      out.instances.push_back({family, size, seed, start == "topcom" ? "topcom:" + std::to_string(t) : start,
-                                               strategy, order, reading});
+            append_start_instances(experiment, family, size, seed,
+                                   start == "topcom" ? "topcom:" + std::to_string(t) : start, out.instances);
         }
         if(insertion)
           for(Face_order order : experiment.orders)
@@ -162,9 +177,12 @@ Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
   if(start.rfind("topcom:", 0) == 0)
   {
     c.start = GIVEN_CELLS_START;
-    const auto& all = instances.topcom_cells.at(instance.family + "|" + std::to_string(instance.size) + "|" +
-                                                std::to_string(instance.seed));
-    c.cells = oriented_cells(c.points, all.at(std::stoul(start.substr(7))));
+    const std::string set = instance.family + "|" + std::to_string(instance.size) + "|" + std::to_string(instance.seed);
+    const auto first = instances.topcom_first.find(set);
+    const std::size_t index = std::stoul(start.substr(7));
+    const std::size_t offset = first == instances.topcom_first.end() ? 0 : first->second;
+    if(index < offset) throw std::invalid_argument("triangulation " + start + " is not held");
+    c.cells = oriented_cells(c.points, instances.topcom_cells.at(set).at(index - offset));
     return c;
   }
   if(start == "placing" || start == "-")
