@@ -7,13 +7,13 @@
 // the last tally (what a batch wrote before its tally is removed); `--shard
 // I/N` keeps the batches whose number is I modulo N.
 //
-// The file: a first line {"stream": OPTIONS}, then instance lines (as
-// without --stream) and lines {"tally": {...}} (doc/Edge_swapping_3/conjectures.md).
+// The file's format: IO/streamed_results.h.
 
 #ifndef EDGE_SWAP_EXPERIMENT_STREAM_H
 #define EDGE_SWAP_EXPERIMENT_STREAM_H
 
 #include "experiment_options.h"
+#include <CGAL/Edge_swapping_3/IO/streamed_results.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Real_timer.h>
 #include <cerrno>
@@ -28,51 +28,6 @@
 namespace edge_swap {
 namespace internal_experiment {
 
-/// The counts of one row (strategy, order, reading) of a tally.
-struct Stream_row
-{
-  std::size_t instances = 0, converged = 0, stuck = 0, limit = 0, equal = 0, failures = 0, invalid = 0, bad_start = 0;
-  double cycles = 0, swaps = 0, seconds = 0;
-  std::size_t max_cycles = 0;
-
-  void add(const ES::Conjecture_case<Point>& c, const ES::Conjecture_outcome& o)
-  {
-    ++instances;
-    converged += o.ending == ES::CONVERGED;
-    stuck += o.ending == ES::STUCK;
-    limit += o.ending == ES::CYCLE_LIMIT_REACHED;
-    equal += o.equal_to_cgal;
-    failures += ES::is_counterexample(c, o);
-    invalid += !o.valid;
-    bad_start += o.bad_start;
-    cycles += double(o.cycles);
-    for(std::size_t s : o.swaps) swaps += double(s);
-    seconds += o.seconds;
-    max_cycles = (std::max)(max_cycles, o.cycles);
-  }
-  void add(const Stream_row& r)
-  {
-    instances += r.instances, converged += r.converged, stuck += r.stuck, limit += r.limit, equal += r.equal;
-    failures += r.failures, invalid += r.invalid, bad_start += r.bad_start;
-    cycles += r.cycles, swaps += r.swaps, seconds += r.seconds;
-    max_cycles = (std::max)(max_cycles, r.max_cycles);
-  }
-  nlohmann::json json() const
-  {
-    return {{"instances", instances}, {"converged", converged}, {"stuck", stuck}, {"limit", limit},
-            {"equal", equal},         {"failures", failures},   {"invalid", invalid}, {"bad_start", bad_start},
-            {"cycles", cycles},       {"swaps", swaps},         {"seconds", seconds}, {"max_cycles", max_cycles}};
-  }
-  static Stream_row from_json(const nlohmann::json& j)
-  {
-    Stream_row r;
-    r.instances = j.at("instances"), r.converged = j.at("converged"), r.stuck = j.at("stuck"), r.limit = j.at("limit");
-    r.equal = j.at("equal"), r.failures = j.at("failures"), r.invalid = j.at("invalid"), r.bad_start = j.at("bad_start");
-    r.cycles = j.at("cycles"), r.swaps = j.at("swaps"), r.seconds = j.at("seconds"), r.max_cycles = j.at("max_cycles");
-    return r;
-  }
-};
-
 /// A row's name: strategy, order, and the reading when it is not the package's.
 inline std::array<std::string, 3> stream_row_key(const ES::Conjecture_instance& in)
 {
@@ -80,96 +35,17 @@ inline std::array<std::string, 3> stream_row_key(const ES::Conjecture_instance& 
           in.reading.is_default() ? std::string() : ES::helper_reading_name(in.reading)};
 }
 
-/// One tally: the counts of the triangulations [first, first + count) of a point set.
-struct Stream_tally
-{
-  std::string set;
-  std::size_t points = 0, first = 0, count = 0;
-  std::size_t plain_stuck_from = 0, helper_failed_from = 0; ///< triangulations
-  bool complete = false;    ///< TOPCOM's enumeration of the set ended with this batch
-  bool truncated = false;   ///< ... because --topcom-limit was reached
-  std::size_t enumerated = 0; ///< the set's triangulations (complete tallies only)
-  std::map<std::array<std::string, 3>, Stream_row> rows;
-
-  nlohmann::json json() const
-  {
-    nlohmann::json r = nlohmann::json::array();
-    for(const auto& [k, row] : rows)
-    {
-      auto j = row.json();
-      j["strategy"] = k[0], j["order"] = k[1];
-      if(!k[2].empty()) j["reading"] = k[2];
-      r.push_back(j);
-    }
-    nlohmann::json t = {{"set", set},   {"points", points}, {"first", first}, {"count", count},
-                        {"plain_stuck_from", plain_stuck_from}, {"helper_failed_from", helper_failed_from},
-                        {"complete", complete}, {"rows", r}};
-    if(complete) t["triangulations"] = enumerated, t["truncated"] = truncated;
-    return {{"tally", t}};
-  }
-  static Stream_tally from_json(const nlohmann::json& line)
-  {
-    const auto& t = line.at("tally");
-    Stream_tally s;
-    s.set = t.at("set"), s.points = t.at("points"), s.first = t.at("first"), s.count = t.at("count");
-    s.plain_stuck_from = t.at("plain_stuck_from"), s.helper_failed_from = t.at("helper_failed_from");
-    s.complete = t.at("complete");
-    if(s.complete) s.enumerated = t.at("triangulations"), s.truncated = t.at("truncated");
-    for(const auto& r : t.at("rows"))
-      s.rows[{r.at("strategy").get<std::string>(), r.at("order").get<std::string>(),
-              r.contains("reading") ? r.at("reading").get<std::string>() : std::string()}] = Stream_row::from_json(r);
-    return s;
-  }
-};
-
-/// Reads a streamed results file line by line: calls `tally(t)` for each
-/// tally and checks every other line. Returns the length of the part to
-/// keep (up to the end of the last tally, or of the first line). Throws
-/// `Input_error` naming the file and line, or `Usage_error` when the
-/// file's options are not `options`.
+/// Reads the streamed results file `path` (IO::read_streamed_results()),
+/// requiring the options `options`; returns the length a resume keeps.
 template <class Tally>
 std::size_t read_stream_file(const std::string& path, const nlohmann::json& options, Tally tally)
 {
   std::ifstream in(path, std::ios::binary);
   if(!in) throw Usage_error("cannot read '" + path + "'");
-  std::string line;
-  std::size_t number = 0, offset = 0, keep = 0;
-  while(std::getline(in, line))
-  {
-    if(in.eof()) break; // a last line without its newline: a stop while writing it
-    ++number;
-    offset += line.size() + 1;
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    auto fail = [&](const std::string& what) {
-      throw IO::Input_error(path + ":" + std::to_string(number) + ": " + what);
-    };
-    if(j.is_discarded()) fail("not a JSON line");
-    if(number == 1)
-    {
-      if(!j.is_object() || !j.contains("stream")) fail("not a file of experiment --stream (no {\"stream\": ...} line)");
-      if(j["stream"] != options)
-        throw Usage_error(path + " was written with other options: " + j["stream"].dump() + "; these are " +
-                          options.dump());
-      keep = offset;
-    }
-    else if(j.is_object() && j.contains("tally"))
-    {
-      try
-      {
-        tally(Stream_tally::from_json(j));
-      }
-      catch(const nlohmann::json::exception& e)
-      {
-        fail(std::string("a bad tally: ") + e.what());
-      }
-      keep = offset;
-    }
-    else
-    {
-      const std::string problem = IO::results_line_problem(j);
-      if(!problem.empty()) fail("not a results line: " + problem);
-    }
-  }
+  std::size_t keep = 0;
+  const nlohmann::json written = IO::read_streamed_results(path, in, tally, keep);
+  if(written != options)
+    throw Usage_error(path + " was written with other options: " + written.dump() + "; these are " + options.dump());
   return keep;
 }
 
@@ -185,51 +61,6 @@ inline nlohmann::json stream_options(const ES::Conjecture_experiment<Point>& exp
   return {{"strategies", strategies}, {"orders", orders},   {"readings", readings},
           {"max_cycles", experiment.max_cycles}, {"batch", batch}, {"shard", shard},
           {"topcom_limit", limit}};
-}
-
-/// Prints the summary of the tallies of a streamed file.
-inline void print_stream_summary(const std::string& path, const std::vector<Stream_tally>& tallies, std::ostream& os)
-{
-  std::map<std::array<std::string, 5>, Stream_row> rows; // family, points, strategy, order, reading
-  struct Set_row
-  {
-    std::size_t triangulations = 0, plain_stuck_from = 0, helper_failed_from = 0, enumerated = 0;
-    bool complete = false, truncated = false;
-  };
-  std::map<std::string, Set_row> sets;
-  for(const auto& t : tallies)
-  {
-    Set_row& s = sets[t.set];
-    s.triangulations += t.count, s.plain_stuck_from += t.plain_stuck_from, s.helper_failed_from += t.helper_failed_from;
-    if(t.complete) s.complete = true, s.truncated = t.truncated, s.enumerated = t.enumerated;
-    for(const auto& [k, r] : t.rows) rows[{t.set.substr(0, t.set.find('|')), std::to_string(t.points), k[0], k[1], k[2]}].add(r);
-  }
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, "%-18s %6s %-8s %-8s %11s %11s %9s %9s %11s %8s %7s %8s %10s  %s\n", "family",
-                "points", "strategy", "order", "instances", "converged", "stuck", "limit", "equal", "failures",
-                "invalid", "mean cyc", "max cycles", "reading");
-  os << buffer;
-  std::size_t total = 0;
-  for(const auto& [k, r] : rows)
-  {
-    total += r.instances;
-    std::snprintf(buffer, sizeof buffer, "%-18s %6s %-8s %-8s %11zu %11zu %9zu %9zu %11zu %8zu %7zu %8.2f %10zu  %s\n",
-                  k[0].c_str(), k[1].c_str(), k[2].c_str(), k[3].c_str(), r.instances, r.converged, r.stuck, r.limit,
-                  r.equal, r.failures, r.invalid, r.instances ? r.cycles / double(r.instances) : 0.0, r.max_cycles,
-                  k[4].empty() ? "(package's)" : k[4].c_str());
-    os << buffer;
-  }
-  os << total << " instances in " << path
-     << " (failures: the helper strategy not ending on CGAL's Delaunay triangulation)\n\nTOPCOM starts, streamed:\n";
-  for(const auto& [name, s] : sets)
-  {
-    os << "  " << name << ": " << s.triangulations << " triangulations run";
-    if(s.complete)
-      os << " of " << s.enumerated << (s.truncated ? " (--topcom-limit reached)" : " (all)");
-    else
-      os << " (enumeration not finished)";
-    os << "; plain stuck from " << s.plain_stuck_from << ", helper failed from " << s.helper_failed_from << "\n";
-  }
 }
 
 } // namespace internal_experiment
@@ -270,7 +101,7 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
   const bool existed = std::filesystem::exists(opt.output) && std::filesystem::file_size(opt.output) > 0;
   if(existed)
   {
-    const std::size_t keep = read_stream_file(opt.output, options, [&](const Stream_tally& t) {
+    const std::size_t keep = read_stream_file(opt.output, options, [&](const IO::Streamed_tally& t) {
       next[t.set] = (std::max)(next[t.set], t.first + t.count);
       if(t.complete) complete.insert(t.set);
     });
@@ -308,7 +139,7 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
             std::size_t first = 0;
             // Runs the held triangulations and writes their lines and tally.
             auto run_batch = [&](bool last, std::size_t enumerated) {
-              Stream_tally tally;
+              IO::Streamed_tally tally;
               tally.set = set, tally.points = points.size(), tally.first = first, tally.count = held.size();
               tally.complete = last, tally.enumerated = enumerated, tally.truncated = last && enumerated >= limit;
               std::vector<ES::Conjecture_instance> list;
@@ -341,7 +172,7 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
                 throw Usage_error("out of memory");
               }
               tally.plain_stuck_from = stuck_from.size(), tally.helper_failed_from = failed_from.size();
-              write(lines + tally.json().dump() + "\n");
+              write(lines + IO::streamed_tally_json(tally).dump() + "\n");
               wrote_tally = true;
               instances_run += list.size();
               held.clear();
@@ -390,9 +221,9 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
   if(!out) throw Usage_error("cannot write '" + opt.output + "'");
   std::cerr << "experiment: " << instances_run << " instances in " << timer.time() << " s"
             << (threads ? " on " + std::to_string(threads) + " threads" : std::string()) << "\n";
-  std::vector<Stream_tally> tallies;
-  read_stream_file(opt.output, options, [&](const Stream_tally& t) { tallies.push_back(t); });
-  print_stream_summary(opt.output, tallies, std::cout);
+  std::vector<IO::Streamed_tally> tallies;
+  read_stream_file(opt.output, options, [&](const IO::Streamed_tally& t) { tallies.push_back(t); });
+  IO::print_streamed_summary(opt.output, tallies, std::cout);
   return 0;
 }
 

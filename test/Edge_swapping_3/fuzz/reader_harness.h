@@ -11,7 +11,9 @@
 
 #include "readers.h"
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "../trace_checker.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/streamed_results.h>
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
@@ -118,6 +120,27 @@ inline Outcome run(Reader reader, std::string_view data)
         if(!outcome.valid) throw std::logic_error("a case ended on an invalid triangulation");
       }
       o.accepted = true;
+      break;
+    }
+    case Reader::streamed:
+    {
+      std::istringstream in{std::string(data)};
+      std::vector<ES::IO::Streamed_tally> tallies;
+      std::size_t keep = 0;
+      ES::IO::read_streamed_results(name, in, [&](const ES::IO::Streamed_tally& t) { tallies.push_back(t); }, keep);
+      if(keep > data.size()) throw std::logic_error("a resume would keep more than the file");
+      std::ostringstream summary;
+      ES::IO::print_streamed_summary(name, tallies, summary);
+      o.accepted = true;
+      break;
+    }
+    case Reader::trace:
+    {
+      // The independent checker: a trace is confirmed, or a line is named.
+      std::istringstream in{std::string(data)};
+      const auto result = trace_checker::check_trace(in);
+      if(result.ok) o.accepted = true;
+      else o.message = name + ": " + result.error;
       break;
     }
     case Reader::results:

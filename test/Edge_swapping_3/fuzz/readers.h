@@ -16,7 +16,7 @@ struct Outcome
   std::string message; ///< the error, when rejected
 };
 
-enum class Reader { node, ele, medit, vtu, topcom, case_json, results };
+enum class Reader { node, ele, medit, vtu, topcom, case_json, results, streamed, trace };
 
 inline const char* reader_name(Reader r)
 {
@@ -28,6 +28,8 @@ inline const char* reader_name(Reader r)
   case Reader::vtu: return "vtu";
   case Reader::topcom: return "topcom";
   case Reader::case_json: return "case_json";
+  case Reader::streamed: return "streamed";
+  case Reader::trace: return "trace";
   default: return "results";
   }
 }
@@ -43,6 +45,8 @@ inline std::string file_name(Reader r)
   case Reader::vtu: return "fuzz.vtu";
   case Reader::topcom: return "TOPCOM output";
   case Reader::case_json: return "fuzz.json";
+  case Reader::streamed: return "fuzz.stream.jsonl";
+  case Reader::trace: return "fuzz.trace.jsonl";
   default: return "fuzz.jsonl";
   }
 }
