@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Streams the JSON lines of `edge_swap experiment` (any number of files, for
 # example one per shard; line by line, so tens of millions of lines fit in
-# memory) and prints a Markdown table: per strategy, behaviour of Algorithm 4
-# and face order, the runs, those that ended on CGAL's Delaunay triangulation,
-# those stuck, and those still going at the cycle limit, by number of points.
+# memory) and prints a Markdown table: per family, strategy, behaviour of
+# Algorithm 4 and face order, the runs, those that ended on CGAL's Delaunay
+# triangulation, those stuck, and those still going at the cycle limit, by
+# number of points. Files of `experiment --stream` are read by their tallies.
 #
 # A behaviour joins the readings that differ only in the ending rule or in
 # pass-over / facet-cells (conjectures.md: they made the same runs). The
@@ -32,38 +33,49 @@ def main(paths):
     members = collections.defaultdict(lambda: collections.defaultdict(collections.Counter))
     sizes = set()
     total = 0
+    def count(family, strategy, reading, order, n, runs, equal, stuck, limit):
+        nonlocal total
+        if strategy == "helper":
+            key = (family, "helper") + behaviour(reading) + (order,)
+        else:
+            reading = "-"
+            key = (family, strategy, "-", "-", "-", order)
+        sizes.add(n)
+        for counter in (rows[key], members[key][reading]):
+            counter["runs"] += runs
+            counter["equal"] += equal
+            counter["stuck"] += stuck
+            counter["limit"] += limit
+            counter["limit %d" % n] += limit
+            counter["runs %d" % n] += runs
+        total += runs
+
     for path in paths:
+        streamed = False
         with open(path, encoding="utf-8") as f:
             for line in f:
                 if not line.strip():
                     continue
                 j = json.loads(line)
-                if j["strategy"] == "helper":
-                    reading = j.get("reading", DEFAULT)
-                    key = ("helper",) + behaviour(reading) + (j["order"],)
-                else:
-                    reading = "-"
-                    key = (j["strategy"], "-", "-", "-", j["order"])
-                n = j["points"]
-                sizes.add(n)
-                ending = j["ending"]
-                for counter in (rows[key], members[key][reading]):
-                    counter["runs"] += 1
-                    counter["equal"] += j["equal_to_cgal"]
-                    counter["stuck"] += ending == "stuck"
-                    counter["limit"] += ending == "cycle limit reached"
-                    counter["limit %d" % n] += ending == "cycle limit reached"
-                    counter["runs %d" % n] += 1
-                total += 1
+                if "stream" in j:
+                    streamed = True
+                elif "tally" in j:
+                    t = j["tally"]
+                    for r in t["rows"]:
+                        count(t["set"].split("|")[0], r["strategy"], r.get("reading", DEFAULT), r["order"],
+                              t["points"], r["instances"], r["equal"], r["stuck"], r["limit"])
+                elif not streamed:  # a streamed file's run lines are in its tallies
+                    count(j["family"], j["strategy"], j.get("reading", DEFAULT), j["order"], j["points"], 1,
+                          j["equal_to_cgal"], j["ending"] == "stuck", j["ending"] == "cycle limit reached")
     sizes = sorted(sizes)
-    print("| strategy | tag lifetime | swap condition | made facets | order | runs | ended on CGAL's | stuck "
+    print("| family | strategy | tag lifetime | swap condition | made facets | order | runs | ended on CGAL's | stuck "
           "| at the cycle limit, by points (%s) |" % ", ".join(map(str, sizes)))
-    print("|---|---|---|---|---|---:|---:|---:|---|")
+    print("|---|---|---|---|---|---|---:|---:|---:|---|")
     disagreements = []
     for key in sorted(rows):
         r = rows[key]
-        by_size = "; ".join("%d of %d" % (r["limit %d" % n], r["runs %d" % n]) for n in sizes)
-        print("| %s | %s | %s | %s | %s | %d | %d | %d | %s |" % (key + (r["runs"], r["equal"], r["stuck"], by_size)))
+        by_size = "; ".join("%d of %d" % (r["limit %d" % n], r["runs %d" % n]) for n in sizes if r["runs %d" % n])
+        print("| %s | %s | %s | %s | %s | %s | %d | %d | %d | %s |" % (key + (r["runs"], r["equal"], r["stuck"], by_size)))
         counts = {tuple(sorted(c.items())) for c in members[key].values()}
         if len(counts) > 1:
             disagreements.append(key)
