@@ -722,16 +722,175 @@ TEST_CASE("Traces: the independent checker confirms every visit of plain and hel
       const auto np = ES::parameters::face_order(ES::PRIORITY_ORDER, CGAL::parameters::random_seed(5));
       const auto report =
         helper ? CGAL::swap_edges_with_helper(tr, np) : CGAL::swap_edges(tr, ES::Delaunay_criterion(), np);
-      REQUIRE(report.ending == ES::CONVERGED);
-      REQUIRE(ES::compare_with_delaunay(tr).identical);
+      // The helper may loop in a fixed order (Conjecture 1 fails for fixed orders); the repair always ends.
+      if(!helper) REQUIRE(report.ending == ES::CONVERGED);
+      if(report.ending == ES::CONVERGED) REQUIRE(ES::compare_with_delaunay(tr).identical);
       const auto swaps = report.total_swaps();
       runs.emplace_back(report.number_of_cycles(), swaps[0] + swaps[1] + swaps[2] + swaps[3]);
+      if(junk == 0)
+        std::cout << "work queue, fixed order (seed 5), 300 random integer points (set 7), "
+                  << (helper ? "helper: " : "plain with the repair: ") << ES::swap_ending_name(report.ending)
+                  << " after " << report.number_of_cycles() << " rounds, " << runs.back().second << " swaps\n";
     }
     INFO((helper ? "helper" : "plain") << ": " << runs[0].first << ", " << runs[1].first << ", " << runs[2].first
                                        << " rounds");
     REQUIRE(runs[1] == runs[0]);
     REQUIRE(runs[2] == runs[0]);
   }
+}
+
+TEST_CASE("Traces of the work queue: every visit confirmed, round 1 covers the start, the end is a fixed point",
+          "[conjectures][traces]")
+{
+  std::size_t checked = 0, multi_round = 0;
+  std::string plain_priority; // a plain run in the fixed order of at least two rounds, to alter below
+  for(unsigned seed = 1; seed <= 8; ++seed)
+    for(ES::Conjecture_strategy strategy : {ES::PLAIN_SWAPS, ES::HELPER_STRATEGY})
+      for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER, ES::PRIORITY_ORDER})
+        for(ES::Conjecture_start start : {ES::PLACING_START, ES::SCRAMBLED_DELAUNAY_START})
+        {
+          ES::Conjecture_case<Point> c;
+          c.points = ES::point_families::random_integer<Point>(14, seed);
+          c.start = start;
+          c.scramble_flips = 40;
+          c.strategy = strategy;
+          c.order = order;
+          c.seed = seed;
+          c.max_cycles = 100;
+          c.schedule = ES::WORK_QUEUE;
+          std::ostringstream trace;
+          const ES::Conjecture_outcome o = ES::trace_conjecture_case(c, trace);
+          const trace_checker::Result r = check_text(trace.str());
+          INFO("seed " << seed << ", " << ES::conjecture_strategy_name(strategy) << ", " << ES::face_order_name(order)
+                       << ": " << r.error);
+          REQUIRE(trace.str().find("\"schedule\":\"queue\"") != std::string::npos);
+          REQUIRE(r.ok);
+          REQUIRE(r.rounds == o.cycles);
+          REQUIRE(r.swaps == o.swaps[0] + o.swaps[1] + o.swaps[2] + o.swaps[3]);
+          REQUIRE(r.end == ES::swap_ending_name(o.ending));
+          REQUIRE(r.ends_on_delaunay == o.equal_to_cgal);
+          ++checked;
+          multi_round += r.rounds >= 3;
+          if(strategy == ES::PLAIN_SWAPS && order == ES::PRIORITY_ORDER && o.cycles >= 3 && plain_priority.empty())
+            plain_priority = trace.str();
+        }
+  REQUIRE(checked == 8 * 2 * 3 * 2);
+  REQUIRE(multi_round > 10);
+  REQUIRE(!plain_priority.empty());
+
+  // Altered: each is refused at its line.
+  const std::vector<std::string> lines = text_lines(plain_priority);
+  std::vector<std::size_t> round_ends, no_flip_round_1, scans;
+  for(std::size_t k = 1; k < lines.size(); ++k)
+  {
+    if(lines[k].find("\"round\"") != std::string::npos) round_ends.push_back(k);
+    else if(lines[k].find("\"scan\":true") != std::string::npos) scans.push_back(k);
+    else if(round_ends.empty() && lines[k].find("\"flip\":null") != std::string::npos) no_flip_round_1.push_back(k);
+  }
+  REQUIRE(no_flip_round_1.size() >= 2);
+  REQUIRE(scans.size() >= 2); // plain swapping's round 1 begins with the scan
+  {
+    // The run "ends" after round 1 with an idle round 2 made up: round 1 had left facets to swap.
+    std::vector<std::string> cut(lines.begin(), lines.begin() + std::ptrdiff_t(round_ends[0] + 1));
+    auto idle = nlohmann::json::parse(lines[round_ends[0]]);
+    idle["round"] = 2, idle["swaps"] = 0, idle["new_tags"] = 0;
+    cut.push_back(idle.dump());
+    cut.push_back("{\"end\":\"converged\",\"rounds\":2}");
+    const auto r = check_text(joined(cut));
+    INFO(r.error);
+    REQUIRE(!r.ok);
+    REQUIRE(r.error.find("the rule would still swap or tag a facet") != std::string::npos);
+  }
+  {
+    // The scan's visits left out: facets of the start that no flip touched are never visited.
+    std::vector<std::string> cut;
+    for(std::size_t k = 0; k < lines.size(); ++k)
+      if(std::find(scans.begin(), scans.end(), k) == scans.end()) cut.push_back(lines[k]);
+    const auto r = check_text(joined(cut));
+    INFO(r.error);
+    REQUIRE(r.error.find("round 1 of the work queue left a facet of the start unvisited") != std::string::npos);
+  }
+  {
+    // A scan line after the queue's visits began.
+    std::vector<std::string> moved = lines;
+    const std::string scan = moved[scans.front()];
+    moved.erase(moved.begin() + std::ptrdiff_t(scans.front()));
+    moved.insert(moved.begin() + std::ptrdiff_t(no_flip_round_1.back()), scan);
+    const auto r = check_text(joined(moved));
+    INFO(r.error);
+    REQUIRE(r.error.find("a scan visit out of place") != std::string::npos);
+  }
+  {
+    // A number that is not a whole number where a point number goes (found by libFuzzer).
+    auto visit = nlohmann::json::parse(lines[no_flip_round_1[0]]);
+    visit["facet"][0] = 3.33e118;
+    std::vector<std::string> bad = lines;
+    bad[no_flip_round_1[0]] = visit.dump();
+    const auto r = check_text(joined(bad));
+    REQUIRE(r.error.find("a number that is not a whole number") != std::string::npos);
+  }
+  {
+    // Two visits of round 1 exchanged: out of the fixed order.
+    std::vector<std::string> swapped = lines;
+    std::swap(swapped[no_flip_round_1[0]], swapped[no_flip_round_1[1]]);
+    const auto r = check_text(joined(swapped));
+    INFO(r.error);
+    REQUIRE(!r.ok);
+  }
+  {
+    // A reading other than the package's on the work queue.
+    auto header = nlohmann::json::parse(lines[0]);
+    header["reading"] = "never-cleared,pass-over,no-swap-no-tag";
+    std::vector<std::string> other = lines;
+    other[0] = header.dump();
+    const auto r = check_text(joined(other));
+    REQUIRE(r.error.find("line 1: the work queue runs the package's reading") != std::string::npos);
+  }
+  // A case file says its schedule; the work queue refuses other readings.
+  ES::Conjecture_case<Point> c;
+  c.points = ES::point_families::random_integer<Point>(8, 1);
+  c.schedule = ES::WORK_QUEUE;
+  const auto j = ES::IO::conjecture_case_json(c);
+  REQUIRE(j["schedule"] == "queue");
+  REQUIRE(ES::IO::conjecture_case_from_json<Point>(j, "c.json").schedule == ES::WORK_QUEUE);
+  c.reading.tag_lifetime = ES::TAGS_NEVER_CLEARED;
+  REQUIRE_THROWS_WITH(ES::run_conjecture_case(c), Catch::Contains("the work queue runs plain swapping and the helper's default"));
+  REQUIRE_THROWS_WITH(ES::IO::conjecture_case_from_json<Point>(ES::IO::conjecture_case_json(c), "c.json"),
+                      Catch::Contains("c.json: bad case file: the schedule 'queue' runs"));
+}
+
+TEST_CASE("edge_swap optimize --trace: the helper and plain swapping on the work queue and the paper's cycles, "
+          "confirmed by the checker", "[conjectures][traces][program]")
+{
+  Workdir w;
+  std::string node = "40 3 0 0\n";
+  CGAL::Random r(11);
+  for(int k = 0; k < 40; ++k)
+    node += std::to_string(k + 1) + " " + std::to_string(r.get_int(0, 30)) + " " + std::to_string(r.get_int(0, 30)) +
+            " " + std::to_string(r.get_int(0, 30)) + "\n";
+  w.write("p.node", node);
+  for(const std::string args : {"--helper", "--helper --schedule cycles", "--helper --order storage --schedule cycles",
+                                "--paper", "--paper --schedule cycles --order random --seed 3"})
+  {
+    const Run run = w.run("optimize " + w.path("p.node") + " -o " + w.path("out.ele") + " --trace " +
+                          w.path("t.jsonl") + " " + args);
+    INFO(args << "\nstderr: " << run.err);
+    REQUIRE(run.exit_code == 0);
+    std::ifstream in(w.path("t.jsonl"));
+    const trace_checker::Result checked = trace_checker::check_trace(in);
+    INFO(checked.error);
+    REQUIRE(checked.ok);
+    REQUIRE(checked.end == "converged");
+    REQUIRE(checked.ends_on_delaunay);
+    REQUIRE(checked.swaps > 0);
+  }
+  for(const auto& [args, what] : std::vector<std::pair<std::string, std::string>>{
+          {"--criterion minmax-dihedral", "--trace records one driver of the Delaunay criterion"},
+          {"", "--trace records one driver of the Delaunay criterion"},
+          {"--helper --perturb none", "--trace needs --perturb cgal"}})
+    require_clean_rejection(w, "optimize " + w.path("p.node") + " -o " + w.path("x.ele") + " --trace " +
+                                   w.path("x.jsonl") + " " + args,
+                            what, {"p.node", "out.ele", "out.node", "t.jsonl"});
 }
 
 TEST_CASE("Loops of the helper strategy under a fixed face order, 8 and 6 points, certified by the independent checker",

@@ -23,6 +23,16 @@
 // the edge through the cell set, and every flip must keep the volume, exactly.
 // What it does not check: in the storage and random orders, which facet comes
 // next (it checks that each round visits listed facets at most once each).
+//
+// Traces of the work queue (schedule "queue", the package's reading): each
+// visit is checked as above; within a round of the fixed order the
+// priorities increase; round 1 visits every facet of the start that no flip
+// of that round touched; and the run's end is checked to be a fixed point:
+// the rule, decided here on every interior facet, neither swaps nor tags. Which
+// facets a round holds is the driver's bookkeeping and is not checked, so
+// loops of the work queue are not certified. Plain swapping's first round
+// starts with a scan (the in-sphere test alone): its lines ("scan": true)
+// come first and must find their facets locally Delaunay.
 
 #ifndef EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
 #define EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
@@ -32,10 +42,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <cstring>
 #include <istream>
+#include <optional>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -96,6 +108,14 @@ inline std::uint64_t point_key(std::uint64_t seed, const Point& p)
   return mix(mix(mix(seed ^ bits(p.x())) ^ bits(p.y())) ^ bits(p.z()));
 }
 
+/// A whole number of the trace: a JSON number that is a non-negative integer
+/// (a float, a negative or a huge number is a Failure, not a conversion).
+inline std::uint64_t whole(const nlohmann::json& j)
+{
+  require(j.is_number_unsigned(), "a number that is not a whole number");
+  return j.get<std::uint64_t>();
+}
+
 // ---- the state ----
 
 class Checker
@@ -112,8 +132,10 @@ public:
     // at most once (an order chosen by a search, experiment_adversarial_orders).
     require(order_ == "storage" || order_ == "random" || order_ == "priority" || order_ == "adversarial",
             "unknown order '" + order_ + "'");
-    require(header.value("schedule", "") == "cycles", "only traces of the paper's cycles are checked");
-    seed_ = header.at("seed").get<std::uint64_t>();
+    const std::string schedule = header.value("schedule", "");
+    require(schedule == "cycles" || schedule == "queue", "the schedule is 'cycles' or 'queue'");
+    queue_ = schedule == "queue";
+    seed_ = whole(header.at("seed"));
     // The reading of Algorithm 4: tag lifetime, swap condition, ending (traces.md).
     std::vector<std::string> reading(1);
     for(char ch : header.at("reading").get<std::string>())
@@ -135,11 +157,22 @@ public:
     end_without_swap_ = ending == "no-swap";
     sweep_ = made == "same-cycle";
     require(!sweep_ || order_ == "priority" || order_ == "random", "same-cycle needs the priority or random order");
-    max_rounds_ = header.at("max_rounds").get<std::size_t>();
+    require(!queue_ || (!clear_tags_each_cycle_ && !tags_outlive_cells_ && pass_over_ && !facet_cells_ &&
+                        !end_without_swap_ && !sweep_ && order_ != "adversarial"),
+            "the work queue runs the package's reading, in storage, random or priority order");
+    max_rounds_ = std::size_t(whole(header.at("max_rounds")));
     for(const auto& p : header.at("points"))
-      points_.emplace_back(p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>());
+    {
+      require(p.is_array() && p.size() == 3, "a point is not three numbers");
+      const double x = p.at(0).get<double>(), y = p.at(1).get<double>(), z = p.at(2).get<double>();
+      // Exact arithmetic needs finite coordinates; the package's range is 1e-30 to 1e30.
+      for(double v : {x, y, z}) require(std::isfinite(v) && std::abs(v) <= 1e30, "a coordinate that is not finite or beyond 1e30");
+      points_.emplace_back(x, y, z);
+    }
     for(const auto& c : header.at("cells")) add_cell(cell_of(c));
     check_start();
+    if(queue_)
+      for(const Facet& f : interior_facets()) unvisited_start_.insert(f);
     begin_round();
   }
 
@@ -218,7 +251,7 @@ private:
     Cell t;
     for(int k = 0; k < 4; ++k)
     {
-      t[k] = c.at(k).get<std::size_t>();
+      t[k] = std::size_t(whole(c.at(k)));
       require(t[k] < points_.size(), "a point number out of range");
     }
     t = sorted(t);
@@ -322,8 +355,31 @@ private:
     return false;
   }
 
+  /// The fixed order's key of facet `f`, and its points sorted lexicographically (the tie-break).
+  std::uint64_t priority(const Facet& f) const
+  {
+    return mix(point_key(seed_, points_[f[0]]) + point_key(seed_, points_[f[1]]) + point_key(seed_, points_[f[2]]));
+  }
+  std::array<std::size_t, 3> by_points(const Facet& f) const
+  {
+    std::array<std::size_t, 3> s = f;
+    std::sort(s.begin(), s.end(), [&](std::size_t a, std::size_t b) {
+      return CGAL::compare_xyz(points_[a], points_[b]) == CGAL::SMALLER;
+    });
+    return s;
+  }
+  bool priority_before(const std::pair<std::uint64_t, std::array<std::size_t, 3>>& a,
+                       const std::pair<std::uint64_t, std::array<std::size_t, 3>>& b) const
+  {
+    if(a.first != b.first) return a.first < b.first;
+    for(int k = 0; k < 3; ++k)
+      if(a.second[k] != b.second[k]) return CGAL::compare_xyz(points_[a.second[k]], points_[b.second[k]]) == CGAL::SMALLER;
+    return false;
+  }
+
   void begin_round()
   {
+    queue_last_.reset();
     if(clear_tags_each_cycle_) tags_.clear();
     ++round_number_;
     if(sweep_)
@@ -342,26 +398,9 @@ private:
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2) listed_.push_back(f);
     if(order_ == "priority")
-    {
-      auto key = [&](const Facet& f) {
-        return mix(point_key(seed_, points_[f[0]]) + point_key(seed_, points_[f[1]]) + point_key(seed_, points_[f[2]]));
-      };
-      auto by_points = [&](const Facet& f) {
-        std::array<std::size_t, 3> s = f;
-        std::sort(s.begin(), s.end(), [&](std::size_t a, std::size_t b) {
-          return CGAL::compare_xyz(points_[a], points_[b]) == CGAL::SMALLER;
-        });
-        return s;
-      };
       std::sort(listed_.begin(), listed_.end(), [&](const Facet& a, const Facet& b) {
-        const std::uint64_t ka = key(a), kb = key(b);
-        if(ka != kb) return ka < kb;
-        const auto pa = by_points(a), pb = by_points(b);
-        for(int k = 0; k < 3; ++k)
-          if(pa[k] != pb[k]) return CGAL::compare_xyz(points_[pa[k]], points_[pb[k]]) == CGAL::SMALLER;
-        return false;
+        return priority_before({priority(a), by_points(a)}, {priority(b), by_points(b)});
       });
-    }
     listed_set_ = std::set<Facet>(listed_.begin(), listed_.end());
     next_ = 0;
     visited_.clear();
@@ -372,6 +411,17 @@ private:
   /// Priority order: the next listed facet that exists now must be `f`.
   void check_turn(const Facet& f)
   {
+    if(queue_)
+    {
+      if(round_number_ == 1) unvisited_start_.erase(f);
+      if(order_ == "priority")
+      {
+        const std::pair<std::uint64_t, std::array<std::size_t, 3>> key{priority(f), by_points(f)};
+        require(!queue_last_ || priority_before(*queue_last_, key), "a visit out of the fixed order in its round");
+        queue_last_ = key;
+      }
+      return;
+    }
     if(sweep_)
     {
       while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
@@ -629,6 +679,10 @@ public:
     round_tags_ += r.new_tags.size();
     if(!r.swap) return;
     require(volume(r.new_cells) == volume(r.old_cells), "the flip does not keep the volume");
+    if(queue_ && round_number_ == 1)
+      for(const auto* cells : {&r.old_cells, &r.new_cells})
+        for(const Cell& t : *cells)
+          for(const Facet& f : facets_of(t)) unvisited_start_.erase(f);
     for(const Cell& t : r.old_cells) remove_cell(t);
     for(const Cell& t : r.new_cells)
     {
@@ -677,12 +731,23 @@ private:
   void visit(const nlohmann::json& l, Result& result)
   {
     Facet f;
-    for(int k = 0; k < 3; ++k) f[k] = l.at("facet").at(k).get<std::size_t>();
+    for(int k = 0; k < 3; ++k) f[k] = std::size_t(whole(l.at("facet").at(k)));
     std::sort(f.begin(), f.end());
     require(is_interior(f), "a visited facet that is not an interior facet now");
-    check_turn(f);
+    const bool scan = l.contains("scan");
+    if(scan)
+    {
+      // The work queue's scan in round 1: the in-sphere test alone, before any other visit.
+      require(queue_ && round_number_ == 1 && !queue_visited_, "a scan visit out of place");
+      require(unvisited_start_.erase(f) == 1, "a scan visit of a facet not in the start, or twice");
+    }
+    else
+    {
+      check_turn(f);
+      queue_visited_ = true;
+    }
     const auto& holders = facets_.at(f);
-    const std::size_t d = l.at("apexes").at(0).get<std::size_t>(), e = l.at("apexes").at(1).get<std::size_t>();
+    const std::size_t d = std::size_t(whole(l.at("apexes").at(0))), e = std::size_t(whole(l.at("apexes").at(1)));
     const std::size_t h0 = apex(holders[0], f), h1 = apex(holders[1], f);
     require((d == h0 && e == h1) || (d == h1 && e == h0), "the apexes are not those of the facet's cells");
     const Decision r = decide(f, d, e);
@@ -691,11 +756,12 @@ private:
     const auto& tagged_list = l.at("tagged");
     require(tagged_list.size() == l.at("cells").size(), "a tag flag per cell");
     for(std::size_t k = 0; k < tagged_list.size(); ++k)
-      require((tagged_list.at(k).get<int>() != 0) == (tags_.count(cell_of(l.at("cells").at(k))) == 1),
+      require((whole(tagged_list.at(k)) != 0) == (tags_.count(cell_of(l.at("cells").at(k))) == 1),
               "a tag read wrongly");
     require(l.at("kind").get<std::string>() == r.kind, "the configuration is " + r.kind);
     require(cell_set(l.at("new_tags")) == r.new_tags, "the tags set are not those the rule sets");
     const auto& flip = l.at("flip");
+    if(scan) require(r.delaunay && !r.swap && r.new_tags.empty(), "the scan left alone a facet the rule acts on");
     if(!r.swap)
       require(flip.is_null() && l.at("created").empty(), "a swap the rule does not make");
     else
@@ -714,30 +780,32 @@ private:
 
   void end_round(const nlohmann::json& l, Result& result)
   {
-    const std::size_t round = l.at("round").get<std::size_t>();
+    const std::size_t round = std::size_t(whole(l.at("round")));
     require(round == result.rounds + 1, "rounds out of sequence");
     if(sweep_)
     {
       while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
       require(ahead_.empty(), "the round ended before a facet ahead in the sweep was visited");
     }
-    else if(order_ == "priority")
+    else if(order_ == "priority" && !queue_)
     {
       while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
       require(next_ == listed_.size(), "the round ended before a listed facet that is still there was visited");
     }
-    require(l.at("swaps").get<std::size_t>() == round_swaps_, "the round's swap count is wrong");
-    require(l.at("new_tags").get<std::size_t>() == round_tags_, "the round's count of new tags is wrong");
+    require(std::size_t(whole(l.at("swaps"))) == round_swaps_, "the round's swap count is wrong");
+    require(std::size_t(whole(l.at("new_tags"))) == round_tags_, "the round's count of new tags is wrong");
     require(cell_set(l.at("cells")) == cells_, "the cells at the round's end differ");
     std::set<Cell> tags_of_cells; // never-cleared: tags of destroyed cells are kept, but not listed
     for(const Cell& t : tags_)
       if(cells_.count(t)) tags_of_cells.insert(t);
     require(cell_set(l.at("tagged")) == tags_of_cells, "the tags at the round's end differ");
+    if(queue_ && round == 1)
+      require(unvisited_start_.empty(), "round 1 of the work queue left a facet of the start unvisited");
     result.rounds = round;
     last_round_idle_ = round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_);
     // A state that comes back certifies a loop when the visits are a function of
     // the state (the fixed order) or are chosen (an adversary repeats its choices).
-    if((order_ == "priority" || order_ == "adversarial") && !result.loop_certified)
+    if((order_ == "priority" || order_ == "adversarial") && !queue_ && !result.loop_certified)
     {
       const auto state = std::make_pair(cells_, tags_);
       const auto it = seen_.find(state);
@@ -763,8 +831,15 @@ private:
   void end(const nlohmann::json& l, Result& result)
   {
     const std::string ending = l.at("end").get<std::string>();
-    require(l.at("rounds").get<std::size_t>() == result.rounds, "the end counts other rounds");
+    require(std::size_t(whole(l.at("rounds"))) == result.rounds, "the end counts other rounds");
     const bool delaunay = all_delaunay();
+    if(queue_ && ending != "cycle limit reached")
+      for(const Facet& f : interior_facets())
+      {
+        const auto [d, e] = apexes(f);
+        const Decision r = decide(f, d, e);
+        require(!r.swap && r.new_tags.empty(), "the work queue ended, but the rule would still swap or tag a facet");
+      }
     if(ending == "converged")
       require(last_round_idle_ && delaunay, "'converged' but the last round changed something or a facet is not Delaunay");
     else if(ending == "stuck")
@@ -796,6 +871,10 @@ private:
   std::set<Facet> listed_set_, visited_;
   std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
   bool last_round_idle_ = false, ended_ = false;
+  bool queue_ = false;                    // a trace of the work queue
+  bool queue_visited_ = false;            // a visit other than the scan's has come
+  std::set<Facet> unvisited_start_;       // the queue's round 1: facets of the start not yet visited or touched
+  std::optional<std::pair<std::uint64_t, std::array<std::size_t, 3>>> queue_last_; // the queue's last priority
   bool clear_tags_each_cycle_ = false, pass_over_ = true, end_without_swap_ = false;
   bool tags_outlive_cells_ = false, facet_cells_ = false, sweep_ = false;
   std::size_t round_number_ = 0;

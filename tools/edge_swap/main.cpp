@@ -46,6 +46,8 @@ int main(int argc, char** argv)
                                       "criterion's measure (degrees for the dihedral angles)");
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
+  optimize->add_option("--trace", opt.trace, "JSON lines: every visit and the state after every round, for the "
+                                             "independent checker (Delaunay: --helper, or plain with --paper)");
 
   std::string check_path;
   auto* check = app.add_subcommand("check", "validity and Delaunay checks of a mesh");

@@ -9,9 +9,12 @@
 #include <CGAL/edge_swapping_3.h>
 #include <CGAL/Edge_swapping_3/mesh_statistics.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Visit_trace.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <sstream>
 #include <type_traits>
 
 namespace edge_swap {
@@ -19,7 +22,7 @@ namespace edge_swap {
 struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order;
-  std::string perturb = "cgal", history, stats, schedule = "queue";
+  std::string perturb = "cgal", history, stats, schedule = "queue", trace;
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   bool helper = false, start_given = false, paper = false;
   double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
@@ -161,7 +164,18 @@ inline int run_optimize(const Optimize_options& o)
   std::vector<std::string> outputs = mesh_output_paths(o.output);
   outputs.push_back(o.history);
   outputs.push_back(o.stats);
+  outputs.push_back(o.trace);
   check_output_paths(outputs);
+  if(!o.trace.empty())
+  {
+    // The trace checker replays plain swapping or the helper, without constraints, under CGAL's perturbation.
+    if(o.criterion != "delaunay" || !(o.helper || o.paper))
+      throw Usage_error("--trace records one driver of the Delaunay criterion: plain swapping with --paper, or --helper");
+    if(o.perturb != "cgal") throw Usage_error("--trace needs --perturb cgal (the checker's tie-breaking)");
+    const std::string ext = std::filesystem::path(o.input).extension().string();
+    if(ext != ".node" && ext != ".ele")
+      throw Usage_error("--trace needs a .node or .ele input (a mesh with boundaries and subdomains is not traced)");
+  }
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
@@ -228,17 +242,36 @@ inline int run_optimize(const Optimize_options& o)
 
   // A Medit mesh keeps its boundaries and subdomains; a point set or a
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
-  const ES::Swap_report report = ES::with_mesh_constraints(in, [&](const auto& constraints) {
-    if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
-    return with_criterion(o.criterion, [&](const auto& criterion) {
-      return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
+  auto run = [&](const auto& parameters) {
+    return ES::with_mesh_constraints(in, [&](const auto& constraints) {
+      if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
+      return with_criterion(o.criterion, [&](const auto& criterion) {
+        return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
+      });
     });
-  });
+  };
+  ES::Swap_report report;
+  std::ostringstream trace; // written with the other outputs, all or nothing
+  if(!o.trace.empty())
+  {
+    ES::Visit_trace_writer<Point> writer(trace, in.points);
+    writer.start(tr, {{"strategy", o.helper ? "helper" : "plain"},
+                      {"schedule", o.schedule == "queue" ? "queue" : "cycles"},
+                      {"order", (o.order == "random" || (o.order.empty() && o.helper)) ? "random" : "storage"},
+                      {"seed", o.seed},
+                      {"reading", ES::helper_reading_name(ES::Helper_reading())},
+                      {"max_rounds", o.max_cycles}});
+    report = run(np::visit_visitor(std::ref(writer), parameters));
+    writer.finish(ES::swap_ending_name(report.ending), report.number_of_cycles());
+  }
+  else
+    report = run(parameters);
   const ES::Mesh_statistics after = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
   const bool repairs = !o.helper && !o.paper && o.criterion == "delaunay";
 
   Output_files files;
   add_mesh_files(files, o.output, tr, in);
+  if(!o.trace.empty()) files.add(o.trace, [&trace](std::ostream& out) { out << trace.str(); });
   if(!o.history.empty())
     files.add(o.history, [&report](std::ostream& out) {
       out << "cycle,swaps_2_3,swaps_3_2,swaps_2_2,swaps_4_4,cells,non_delaunay_faces,visits,new_tags\n";

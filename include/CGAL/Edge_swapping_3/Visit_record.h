@@ -33,6 +33,10 @@ struct Visit_record
   std::vector<Cell_vertices> new_tags;  ///< helper: the cells the visit tagged
   int flip = -1;                        ///< the `Flip_kind` of the swap the visit made, or -1
   std::vector<Cell_vertices> created;   ///< the finite cells the swap made
+  /// The work queue's first round with the Delaunay criterion: the facet was
+  /// visited by the scan that runs the in-sphere test alone, found locally
+  /// Delaunay and so left alone (the rule decides nothing there).
+  bool scanned = false;
 };
 
 /// \ingroup PkgEdgeSwapping3Reports

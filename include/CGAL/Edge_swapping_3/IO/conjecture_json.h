@@ -56,6 +56,7 @@ nlohmann::json conjecture_case_json(const Conjecture_case<Point>& c)
                       {"max_cycles", c.max_cycles}};
   if(c.start == GIVEN_CELLS_START) j["cells"] = c.cells;
   if(!c.reading.is_default()) j["reading"] = helper_reading_name(c.reading);
+  if(c.schedule == WORK_QUEUE) j["schedule"] = "queue";
   return j;
 }
 
@@ -95,6 +96,12 @@ Conjecture_case<Point> conjecture_case_from_json(const nlohmann::json& j, const 
   if(!face_order_from_name(order, c.order)) fail("unknown order '" + order + "' (storage, random, priority)");
   if(j.contains("reading") && !helper_reading_from_name(text("reading"), c.reading))
     fail("unknown reading '" + text("reading") + "' (doc/Edge_swapping_3/traces.md)");
+  if(j.contains("schedule"))
+  {
+    const std::string schedule = text("schedule");
+    if(schedule != "cycles" && schedule != "queue") fail("unknown schedule '" + schedule + "' (cycles, queue)");
+    c.schedule = schedule == "queue" ? WORK_QUEUE : PAPER_CYCLES;
+  }
   const std::string problem = point_set_problem(c.points);
   if(!problem.empty()) fail(problem);
   if(start.rfind("scramble:", 0) == 0)
@@ -136,6 +143,8 @@ Conjecture_case<Point> conjecture_case_from_json(const nlohmann::json& j, const 
     fail("unknown start '" + start + "' (placing, scramble:K, cells)");
   if((c.start == NO_START) != (c.strategy == INSERTION_WITH_PLAIN_SWAPS))
     fail("start '-' goes with the strategy insertion, and only with it");
+  if(c.schedule == WORK_QUEUE && (c.strategy == INSERTION_WITH_PLAIN_SWAPS || !c.reading.is_default()))
+    fail("the schedule 'queue' runs plain swapping and the helper's default reading only");
   return c;
 }
 

@@ -63,9 +63,18 @@ inline bool tally_flag(const nlohmann::json& j, const char* key)
 /// The counts of one row (strategy, order, reading) of a tally.
 struct Streamed_row
 {
-  std::size_t instances = 0, converged = 0, stuck = 0, limit = 0, equal = 0, failures = 0, invalid = 0, bad_start = 0;
-  double cycles = 0, swaps = 0, seconds = 0; ///< sums over the row's runs
-  std::size_t max_cycles = 0;
+  std::size_t instances = 0;  ///< runs
+  std::size_t converged = 0;  ///< runs that ended with nothing left to do
+  std::size_t stuck = 0;      ///< runs that ended stuck
+  std::size_t limit = 0;      ///< runs still going at the cycle limit
+  std::size_t equal = 0;      ///< runs that ended on CGAL's Delaunay triangulation, cell for cell
+  std::size_t failures = 0;   ///< counterexamples (`is_counterexample()`)
+  std::size_t invalid = 0;    ///< runs that ended on a triangulation `is_valid()` refuses
+  std::size_t bad_start = 0;  ///< runs whose start was not a triangulation
+  double cycles = 0;          ///< the cycles of all the runs
+  double swaps = 0;           ///< the swaps of all the runs
+  double seconds = 0;         ///< the time of all the runs
+  std::size_t max_cycles = 0; ///< the most cycles of a run
 
   /// Counts one run.
   template <class Point>
@@ -99,8 +108,11 @@ struct Streamed_row
 struct Streamed_tally
 {
   std::string set;            ///< family|size|seed
-  std::size_t points = 0, first = 0, count = 0;
-  std::size_t plain_stuck_from = 0, helper_failed_from = 0; ///< triangulations
+  std::size_t points = 0;             ///< the set's points
+  std::size_t first = 0;              ///< the number of the first triangulation (TOPCOM's order, from 0)
+  std::size_t count = 0;              ///< the triangulations
+  std::size_t plain_stuck_from = 0;   ///< triangulations from which plain swapping was stuck in some order
+  std::size_t helper_failed_from = 0; ///< triangulations from which the helper failed under some order or reading
   bool complete = false;      ///< TOPCOM's enumeration of the set ended with this batch
   bool truncated = false;     ///< ... because the triangulation limit was reached
   std::size_t enumerated = 0; ///< the set's triangulations (complete tallies only)

@@ -63,6 +63,9 @@ struct Conjecture_case
   unsigned seed = 1;                             ///< of the face order and the scrambling flips
   std::size_t max_cycles = 1000;                 ///< the cycle limit of each run
   Helper_reading reading;                        ///< the helper strategy's reading of Algorithm 4
+  /// The paper's cycles (the laboratory's), or the work queue (the package's
+  /// default for users; the package's reading only). Insertion runs cycles.
+  Schedule schedule = PAPER_CYCLES;
 };
 
 /// \ingroup PkgEdgeSwapping3Laboratory
@@ -175,7 +178,7 @@ template <class Point>
 auto laboratory_swap_parameters(const Conjecture_case<Point>& c)
 {
   namespace np = Edge_swapping_3::parameters;
-  return np::schedule(PAPER_CYCLES,
+  return np::schedule(c.schedule,
                       np::face_order(c.order, np::helper_reading(c.reading,
                                                                  np::delaunay_repair(false, CGAL::parameters::random_seed(c.seed)
                                                                            .number_of_iterations(c.max_cycles)))));
@@ -223,6 +226,8 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c, Visit_tr
   if(!problem.empty()) throw std::invalid_argument(problem);
   if(trace != nullptr && c.strategy == INSERTION_WITH_PLAIN_SWAPS)
     throw std::invalid_argument("traces are written for the plain and helper strategies, not for insertion");
+  if(c.schedule == WORK_QUEUE && (c.strategy == INSERTION_WITH_PLAIN_SWAPS || !c.reading.is_default()))
+    throw std::invalid_argument("the work queue runs plain swapping and the helper's default reading only");
   Conjecture_outcome o;
   CGAL::Real_timer timer;
   timer.start();
@@ -260,7 +265,7 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c, Visit_tr
     if(trace != nullptr)
     {
       trace->start(tr, {{"strategy", conjecture_strategy_name(c.strategy)},
-                        {"schedule", "cycles"},
+                        {"schedule", c.schedule == WORK_QUEUE ? "queue" : "cycles"},
                         {"order", face_order_name(c.order)},
                         {"seed", c.seed},
                         {"reading", helper_reading_name(c.reading)},

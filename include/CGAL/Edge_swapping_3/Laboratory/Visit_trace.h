@@ -68,6 +68,7 @@ public:
     line["new_tags"] = cell_list(r.new_tags);
     line["flip"] = r.flip < 0 ? nlohmann::json(nullptr) : nlohmann::json(flip_kind_name(Flip_kind(r.flip)));
     line["created"] = cell_list(r.created);
+    if(r.scanned) line["scan"] = true;
     out_ << line.dump() << '\n';
   }
 

@@ -39,6 +39,7 @@
 #include <set>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -218,6 +219,11 @@ public:
       if(state_.empty()) break;
       State& s = state(plan.old_cells[k]);
       queued_facets_ -= number_of_bits(s & (0xF * QUEUED));
+      // Its entries in the queue are dead; the slot may be reused at once by a
+      // cell that queues a facet for the next round, which they must not visit.
+      if(s & (0xF * QUEUED))
+        for(int i = 0; i < 4; ++i)
+          if(s & (QUEUED << i)) ++dead_entries_[facet_slot(index_(plan.old_cells[k]), i)];
       registered_facets_ -= number_of_bits(s & (0xF * REGISTERED));
       s = first_round_ ? TOUCHED : 0;
     }
@@ -318,6 +324,26 @@ public:
   /// scan's visits, so that every interior facet is visited once in it.
   void seed_scanned(const std::vector<std::pair<Cell_handle, int>>& facets, std::size_t scanned)
   {
+    if constexpr(tracing)
+    {
+      // The trace lists the scan's visits of the facets it found locally Delaunay.
+      std::set<std::array<Vertex_handle, 3>> failing;
+      auto key = [](Cell_handle c, int i) {
+        std::array<Vertex_handle, 3> k{c->vertex((i + 1) & 3), c->vertex((i + 2) & 3), c->vertex((i + 3) & 3)};
+        std::sort(k.begin(), k.end());
+        return k;
+      };
+      for(const auto& [c, i] : facets) failing.insert(key(c, i));
+      for(Cell_handle c : tr_.finite_cell_handles())
+        for(int i = 0; i < 4; ++i)
+          if(!tr_.is_infinite(c->neighbor(i)) && holds_facet(tr_, c, i) && !failing.count(key(c, i)))
+          {
+            Visit_record<Tr> record;
+            before_visit(record, c, i);
+            record.scanned = true;
+            unwrap(*visit_visitor_).visit(tr_, record);
+          }
+    }
     for(const auto& [c, i] : facets) queue_facet(c, i);
     seeded_ = true;
     scanned_visits_ = scanned - (std::min)(scanned, facets.size());
@@ -444,6 +470,17 @@ private:
     if(2 * queue_.size() > 3 * queued_facets_ + 8192) compact_queue();
   }
 
+  /// Whether the queue entry `slot` is the first left of a cell that a flip
+  /// destroyed while the entry was queued; if so, it is used up.
+  bool is_dead_entry(std::uint32_t slot)
+  {
+    if(dead_entries_.empty()) return false;
+    const auto it = dead_entries_.find(slot);
+    if(it == dead_entries_.end()) return false;
+    if(--it->second == 0) dead_entries_.erase(it);
+    return true;
+  }
+
   /// Drops the queue's dead entries in place (the first entry of each queued
   /// facet stays, in order: the one a round would visit). The bits of the
   /// entries kept are cleared on the way, so that later copies are dropped,
@@ -454,6 +491,7 @@ private:
     for(std::size_t k = 0; k < queue_.size(); ++k)
     {
       const std::uint32_t slot = queue_[k];
+      if(is_dead_entry(slot)) continue;
       State& s = state_[slot / 4];
       const State bit = State(QUEUED << (slot % 4));
       if(!(s & bit)) continue;
@@ -1068,6 +1106,7 @@ private:
         --round_left_;
         const std::uint32_t slot = queue_.front();
         queue_.pop_front();
+        if(is_dead_entry(slot)) continue;
         // Not queued any more: destroyed with its cell, or visited already
         // (from either side) in this round. A slot that another cell took
         // since is visited here if that cell queued the facet.
@@ -1118,6 +1157,10 @@ private:
   std::deque<std::uint32_t> queue_;          // facets as slot and index, in queueing order
   std::size_t round_left_ = 0;               // entries of the round under way at the front of queue_
   std::size_t queued_facets_ = 0;            // QUEUED bits set
+  // By queue entry (slot): entries of destroyed cells still in the queue. In
+  // the queue's order, the first entries of a slot are the dead ones (a new
+  // cell's entries come behind), so they are skipped first.
+  std::unordered_map<std::uint32_t, std::uint32_t> dead_entries_;
   // A cycle: where flips moved list entries (a destroyed entry is neither here
   // nor where it was listed), the entry of each moved facet, and the entries of
   // destroyed facets by their vertices.
