@@ -221,7 +221,7 @@ public:
       queued_facets_ -= number_of_bits(s & (0xF * QUEUED));
       // Its entries in the queue are dead; the slot may be reused at once by a
       // cell that queues a facet for the next round, which they must not visit.
-      if(s & (0xF * QUEUED))
+      if(queueing_ && (s & (0xF * QUEUED))) // in a cycle the bits are LISTED, and there is no queue
         for(int i = 0; i < 4; ++i)
           if(s & (QUEUED << i)) ++dead_entries_[facet_slot(index_(plan.old_cells[k]), i)];
       registered_facets_ -= number_of_bits(s & (0xF * REGISTERED));
