@@ -1107,9 +1107,9 @@ private:
         const std::uint32_t slot = queue_.front();
         queue_.pop_front();
         if(is_dead_entry(slot)) continue;
-        // Not queued any more: destroyed with its cell, or visited already
-        // (from either side) in this round. A slot that another cell took
-        // since is visited here if that cell queued the facet.
+        // Not queued any more: visited already (from either side) in this
+        // round. An entry of a destroyed cell was skipped just above, even if
+        // another cell took its slot since and queued that facet.
         State& s = state_[slot / 4];
         int i = int(slot % 4);
         if(!(s & (QUEUED << i))) continue;
