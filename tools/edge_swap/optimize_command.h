@@ -230,10 +230,11 @@ inline int run_optimize(const Optimize_options& o)
   const ES::Mesh_statistics before = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
   namespace np = ES::parameters;
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
+  // The library's defaults: storage order, but random for the helper (which can loop in storage order).
+  const bool random_order = o.order == "random" || (o.order.empty() && o.helper);
   const auto parameters = np::schedule(
     o.schedule == "queue" ? ES::WORK_QUEUE : ES::PAPER_CYCLES,
-    // The library's defaults: storage order, but random for the helper (which can loop in storage order).
-    np::face_order((o.order == "random" || (o.order.empty() && o.helper)) ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
+    np::face_order(random_order ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
                    np::perturbation(perturbation,
                                     np::record_non_delaunay_facets(!o.history.empty(),
                                     np::cycle_visitor(cycle_progress(o.helper ? "helper" : o.criterion),
@@ -257,7 +258,7 @@ inline int run_optimize(const Optimize_options& o)
     ES::Visit_trace_writer<Point> writer(trace, in.points);
     writer.start(tr, {{"strategy", o.helper ? "helper" : "plain"},
                       {"schedule", o.schedule == "queue" ? "queue" : "cycles"},
-                      {"order", (o.order == "random" || (o.order.empty() && o.helper)) ? "random" : "storage"},
+                      {"order", random_order ? "random" : "storage"},
                       {"seed", o.seed},
                       {"reading", ES::helper_reading_name(ES::Helper_reading())},
                       {"max_rounds", o.max_cycles}});

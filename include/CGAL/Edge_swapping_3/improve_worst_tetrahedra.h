@@ -31,6 +31,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <iterator>
 #include <limits>
 #include <queue>
@@ -169,7 +170,9 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(k > std::numeric_limits<std::uint32_t>::max()) throw std::length_error("Edge_swapping_3: more than 2^32 cells");
     return Entry{float(s), std::uint32_t(k)};
   };
-  std::priority_queue<Entry> heap;
+  // On a deque, the heap grows by pieces: a vector would hold its old and
+  // new arrays at once when it doubles.
+  std::priority_queue<Entry, std::deque<Entry>> heap;
   auto push = [&](Cell_handle c, bool changed) {
     std::uint8_t& w = waiting_at(slots(c));
     if(changed) w = 0;
@@ -240,10 +243,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   Quality_report report;
   report.worst_before = worst();
   {
-    // The first heap in one piece, with room for the cells pushed again
-    // before the first ones are taken: a heap that doubles holds both copies.
-    std::vector<Entry> first;
-    first.reserve(tr.number_of_finite_cells() + tr.number_of_finite_cells() / 4);
+    std::deque<Entry> first;
     for(Cell_handle c : tr.finite_cell_handles())
     {
       if(!counted(c)) continue;
@@ -252,24 +252,30 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       waiting_at(slots(c)) = 1;
       first.push_back(entry_of(c, s));
     }
-    heap = std::priority_queue<Entry>(std::less<Entry>(), std::move(first));
+    heap = std::priority_queue<Entry, std::deque<Entry>>(std::less<Entry>(), std::move(first));
   }
   std::vector<Cell_handle> created;
-  // Failed removals in a fixed amount of memory, an 8-byte slot per four
-  // cells each: a failure forgotten is tried again, with the same result.
-  internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? tr.number_of_finite_cells() / 4 : 0);
-  internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? tr.number_of_finite_cells() / 4
-                                                                                          : 0);
+  // Failed removals in a fixed amount of memory, an 8-byte slot per eight
+  // cells each (so that the driver stays within 1.2 times the memory of the
+  // triangulation): a failure forgotten is tried again.
+  const std::size_t failure_slots = tr.number_of_finite_cells() / 4;
+  internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? failure_slots : 0);
+  internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? failure_slots : 0);
   // Two-step removal reads the cells through the ends of the edge: its
   // failures are remembered with the stamps of the two vertices, which each
-  // change stamps (that of every vertex of a new or moved cell) renews.
-  internal::Failed_attempts<internal::Edge_key<Tr>, internal::Edge_key_hash, bool> two_step_failures;
-  internal::Flat_hash_map<typename Tr::Vertex_handle, std::uint64_t, internal::Handle_hash> stamps;
+  // change stamps (that of every vertex of a new or moved cell) renews. The
+  // stamps are by vertex slot: no operation creates or removes a vertex.
+  // Besides the failures of single edges, each cell keeps (by slot) the time
+  // at which all its edges failed: an edge whose ends are older needs no new
+  // attempt. Times are counts of changes, plus one (0: never tried); past
+  // 2^32 changes nothing more is kept.
+  internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 2 * failure_slots : 0);
+  internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
+      tr.tds().vertices());
+  std::vector<std::uint64_t> stamps((operations & TWO_STEP_EDGE_REMOVAL) ? vertex_slots.number_of_slots() : 0, 0);
+  std::vector<std::uint32_t> two_step_tried;
   std::uint64_t changes = 0;
-  auto stamp_of = [&](typename Tr::Vertex_handle v) {
-    const std::uint64_t* s = stamps.find(v);
-    return s == nullptr ? std::uint64_t(0) : *s;
-  };
+  auto stamp_of = [&](typename Tr::Vertex_handle v) { return stamps[vertex_slots(v)]; };
   // The vertices whose smoothing failed since their star last changed (a
   // cell around them made or removed, or a vertex of their star moved), and
   // the moves of each vertex.
@@ -355,20 +361,26 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         ++report.flips[conf.flip_kind()];
         improved = true;
       }
-    if(operations & TWO_STEP_EDGE_REMOVAL)
+    if((operations & TWO_STEP_EDGE_REMOVAL) && !improved)
+    {
+      if(entry.slot >= two_step_tried.size()) two_step_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
+      const std::uint64_t tried = two_step_tried[entry.slot];
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
         {
+          const std::uint64_t stamp_i = stamp_of(c->vertex(i)), stamp_j = stamp_of(c->vertex(j));
+          if(tried > (std::max)(stamp_i, stamp_j)) continue;
           const auto key = internal::edge_key<Tr>(c->vertex(i), c->vertex(j));
-          const std::uint64_t signature =
-              internal::mix_bits(stamp_of(c->vertex(i))) + internal::mix_bits(stamp_of(c->vertex(j)));
+          const std::uint64_t signature = internal::mix_bits(stamp_i) + internal::mix_bits(stamp_j);
           if(two_step_failures.find(key, signature) != nullptr) continue;
-          improved = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion, constraints,
-                                                        visitor, maximum_ring, created)
-                         .removed();
-          two_step_failures.record(key, signature, false, improved);
+          const auto attempt = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion,
+                                                                  constraints, visitor, maximum_ring, created);
+          improved = attempt.removed();
+          two_step_failures.record(key, signature, attempt, improved);
           if(improved) ++report.two_step_removals;
         }
+      if(!improved && changes < std::numeric_limits<std::uint32_t>::max()) two_step_tried[entry.slot] = std::uint32_t(changes + 1);
+    }
     if(operations & SMOOTHING)
       for(int i = 0; i < 4 && !improved; ++i)
       {
@@ -389,8 +401,10 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(improved)
     {
       ++changes;
-      for(Cell_handle n : created)
-        for(int i = 0; i < 4; ++i) stamps[n->vertex(i)] = changes;
+      if(!stamps.empty())
+        for(Cell_handle n : created)
+          for(int i = 0; i < 4; ++i)
+            if(!tr.is_infinite(n->vertex(i))) stamps[vertex_slots(n->vertex(i))] = changes;
       if(!settled.empty())
         for(Cell_handle n : created)
           for(int i = 0; i < 4; ++i) settled.erase(n->vertex(i));

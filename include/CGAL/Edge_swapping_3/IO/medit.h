@@ -41,12 +41,12 @@ inline Medit_mesh read_medit_text(const std::string& name, std::string_view text
   Medit_mesh m;
   std::string_view keyword;
   bool dimension_seen = false, vertices_seen = false;
-  auto token = [&](const std::string& what) {
+  auto token = [&](std::string_view what) {
     std::string_view t;
-    if(!r.next_token(t)) r.fail("the file ends before " + what);
+    if(!r.next_token(t)) r.fail("the file ends before " + std::string(what));
     return t;
   };
-  auto read_int = [&](const std::string& what) { return r.number<int>(token(what), what); };
+  auto read_int = [&](std::string_view what) { return r.number<int>(token(what), what); };
   auto index = [&]() {
     const std::string_view t = token("a vertex index");
     const long long i = r.number<long long>(t, "a vertex index");
@@ -55,7 +55,7 @@ inline Medit_mesh read_medit_text(const std::string& name, std::string_view text
     return std::size_t(i - 1);
   };
   // A count of entries of `numbers` numbers each: each takes at least 2 bytes a number.
-  auto count = [&](const std::string& what, std::size_t numbers) {
+  auto count = [&](std::string_view what, std::size_t numbers) {
     return r.count(token(what), what, 2 * numbers);
   };
   // The sections skipped, with the number of numbers per entry.

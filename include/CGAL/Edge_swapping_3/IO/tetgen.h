@@ -42,10 +42,10 @@ public:
   bool next_line() { return scan_.next_line(); }
 
   template <class T>
-  T read(const std::string& what)
+  T read(std::string_view what)
   {
     std::string_view token;
-    if(!scan_.next_token_in_line(token)) fail("missing " + what);
+    if(!scan_.next_token_in_line(token)) fail("missing " + std::string(what));
     return scan_.number<T>(token, what);
   }
 

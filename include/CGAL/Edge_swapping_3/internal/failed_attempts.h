@@ -39,33 +39,6 @@ std::uint64_t vertex_signature(const Tr& tr, typename Tr::Vertex_handle v)
   return h;
 }
 
-template <class Key, class Hash, class Report>
-class Failed_attempts
-{
-public:
-  /// The report of the failure at `key` when the cells read then have `signature`, else null.
-  const Report* find(const Key& key, std::uint64_t signature) const
-  {
-    const Failure* known = failures_.find(key);
-    return (known != nullptr && known->signature == signature) ? &known->report : nullptr;
-  }
-
-  /// Records the outcome of an attempt: a failure is kept, a success forgets the key.
-  void record(const Key& key, std::uint64_t signature, const Report& report, bool succeeded)
-  {
-    if(succeeded) failures_.erase(key);
-    else failures_[key] = {signature, report};
-  }
-
-private:
-  struct Failure
-  {
-    std::uint64_t signature;
-    Report report;
-  };
-  Flat_hash_map<Key, Failure, Hash> failures_;
-};
-
 /// Failed attempts in a fixed amount of memory: a table of fingerprints (the
 /// key's hash mixed with the signature of the cells read, and the outcome),
 /// two places per fingerprint, the older one overwritten when both are
@@ -73,7 +46,9 @@ private:
 /// multi-face removal the attempt is a function of the cells its signature
 /// covers, so forgetting costs time and leaves the run as it was (the same
 /// operations from the Delaunay meshes of 10^4 and 10^5 points, in the
-/// benchmark). Only the outcome is kept: a remembered failure comes back as a
+/// benchmark); a two-step removal's signature covers less (benchmarks.md,
+/// "Quality at scale"), so there a forgotten failure tried again may succeed.
+/// Only the outcome is kept: a remembered failure comes back as a
 /// report with its outcome alone.
 template <class Key, class Hash, class Report>
 class Failure_cache
