@@ -85,14 +85,17 @@ std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
   const std::string problem = build_triangulation_from_cells(tr, mesh.points, mesh.cells, vertices, cells);
   if(!problem.empty()) return problem;
   for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
+  const bool one_subdomain = mesh.cell_references.empty();
   for(auto c : tr.all_cell_handles())
   {
     c->info() = Domain_cell_info();
     if(tr.is_infinite(c)) c->info().subdomain = 0;
+    else if(one_subdomain) c->info().subdomain = 1;
   }
-  // The cells come in the order of the tetrahedra read.
-  for(std::size_t k = 0; k < cells.size(); ++k)
-    cells[k]->info().subdomain = mesh.cell_references.empty() ? 1 : mesh.cell_references[k];
+  // The cells come in the order of the tetrahedra read (a jump in memory
+  // for each, in the Hilbert order of a large mesh: only when needed).
+  if(!one_subdomain)
+    for(std::size_t k = 0; k < cells.size(); ++k) cells[k]->info().subdomain = mesh.cell_references[k];
   for(std::size_t k = 0; k < mesh.triangles.size(); ++k)
   {
     const auto& t = mesh.triangles[k];

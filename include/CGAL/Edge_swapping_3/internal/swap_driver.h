@@ -39,7 +39,6 @@
 #include <set>
 #include <stdexcept>
 #include <type_traits>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -475,9 +474,9 @@ private:
   bool is_dead_entry(std::uint32_t slot)
   {
     if(dead_entries_.empty()) return false;
-    const auto it = dead_entries_.find(slot);
-    if(it == dead_entries_.end()) return false;
-    if(--it->second == 0) dead_entries_.erase(it);
+    std::uint32_t* count = dead_entries_.find(slot);
+    if(count == nullptr) return false;
+    if(--*count == 0) dead_entries_.erase(slot);
     return true;
   }
 
@@ -1159,8 +1158,10 @@ private:
   std::size_t queued_facets_ = 0;            // QUEUED bits set
   // By queue entry (slot): entries of destroyed cells still in the queue. In
   // the queue's order, the first entries of a slot are the dead ones (a new
-  // cell's entries come behind), so they are skipped first.
-  std::unordered_map<std::uint32_t, std::uint32_t> dead_entries_;
+  // cell's entries come behind), so they are skipped first. (Open addressing:
+  // a node per entry, as in std::unordered_map, put the helper at 10% moves
+  // of 10^5 points at 1.29 times the triangulation's memory.)
+  Flat_hash_map<std::uint32_t, std::uint32_t, Slot_hash> dead_entries_;
   // A cycle: where flips moved list entries (a destroyed entry is neither here
   // nor where it was listed), the entry of each moved facet, and the entries of
   // destroyed facets by their vertices.
