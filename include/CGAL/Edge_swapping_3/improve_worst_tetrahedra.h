@@ -255,9 +255,9 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     heap = std::priority_queue<Entry, std::deque<Entry>>(std::less<Entry>(), std::move(first));
   }
   std::vector<Cell_handle> created;
-  // Failed removals in a fixed amount of memory, an 8-byte slot per eight
-  // cells each (so that the driver stays within 1.2 times the memory of the
-  // triangulation): a failure forgotten is tried again.
+  // Failed removals in a fixed amount of memory, an 8-byte slot per four
+  // cells each (per two for two-step removal, below): a failure forgotten is
+  // tried again. Smaller tables cost time (benchmarks.md, "Quality at scale").
   const std::size_t failure_slots = tr.number_of_finite_cells() / 4;
   internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? failure_slots : 0);
   internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? failure_slots : 0);
