@@ -19,6 +19,20 @@ typedef Tr::Vertex_handle Vertex_handle;
 typedef Tr::Cell_handle Cell_handle;
 typedef std::array<Vertex_handle, 4> Tet;
 
+// A flip visitor that does nothing, of a type of its own: the drivers make every flip.
+struct No_op_flip_visitor : ES::Default_flip_visitor
+{
+};
+
+// A facet by its points, in order.
+std::array<Point, 3> facet_points(Cell_handle c, int i)
+{
+  std::array<Point, 3> p = {c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(),
+                            c->vertex((i + 3) & 3)->point()};
+  std::sort(p.begin(), p.end());
+  return p;
+}
+
 Tet sorted_tet(Cell_handle c)
 {
   Tet t = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
@@ -322,13 +336,15 @@ TEST_CASE("Delaunay work queue: round 1 scans every interior facet once and visi
   }
   // Scrambled: round 1 sees each interior facet once (scanned; visited again by the driver
   // when it failed the scan and still exists at its turn), the next rounds only what flips
-  // changed; the end is CGAL's triangulation.
+  // changed; the end is CGAL's triangulation. (A flip visitor keeps the repair's own flips,
+  // whose round 1 also visits the facets it makes, out of the way.)
   for(ES::Face_order order : {ES::STORAGE_ORDER, ES::RANDOM_ORDER})
   {
     Tr tr = dt;
     ES::scramble(tr, 2000, seed);
     const std::size_t before = interior_facets(tr);
-    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::face_order(order).random_seed(seed));
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
+                                    np::face_order(order).random_seed(seed).visitor(No_op_flip_visitor()));
     REQUIRE(r.ending == ES::CONVERGED);
     REQUIRE(r.repair_path == ES::PLAIN_FLIPS);
     REQUIRE(r.cycles[0].visits <= before);
@@ -352,6 +368,12 @@ TEST_CASE("Delaunay work queue: round 1 scans every interior facet once and visi
                                      np::number_of_threads(2u, np::face_order(order).random_seed(seed)));
     REQUIRE(r2.ending == ES::CONVERGED);
     REQUIRE(cell_set(again) == cell_set(tr));
+    // The repair's own flips (storage order, no visitor): every flip in round 1 here.
+    if(order == ES::STORAGE_ORDER)
+    {
+      REQUIRE(r2.number_of_cycles() == 1);
+      REQUIRE(r2.cycles[0].total_swaps() > 0);
+    }
   }
 }
 
@@ -366,7 +388,9 @@ TEST_CASE("Work queue: same Delaunay triangulation as the cycles, in fewer visit
     ES::scramble(queue, 4000, seed);
     ES::insert_delaunay(cycles, points);
     ES::scramble(cycles, 4000, seed);
-    const auto q = CGAL::swap_edges(queue, ES::Delaunay_criterion(), CGAL::parameters::random_seed(seed));
+    // The driver's queue (a flip visitor keeps the repair's own flips out of the way).
+    const auto q = CGAL::swap_edges(queue, ES::Delaunay_criterion(),
+                                    CGAL::parameters::random_seed(seed).visitor(No_op_flip_visitor()));
     const auto c = CGAL::swap_edges(cycles, ES::Delaunay_criterion(),
                                     np::schedule(ES::PAPER_CYCLES, CGAL::parameters::random_seed(seed)));
     REQUIRE(q.ending == ES::CONVERGED);
@@ -551,8 +575,9 @@ TEST_CASE("Delaunay repair: every family and start ends equal to CGAL, in both s
         // facets plain flips left (fewer when its flips destroy some first).
         if(schedule == ES::WORK_QUEUE && r.repair_path == ES::HELPER_FLIPS)
         {
-          const auto& first_helper_round = r.cycles[r.number_of_cycles() - r.helper_rounds];
-          REQUIRE(first_helper_round.cycle == r.number_of_cycles() - r.helper_rounds + 1);
+          REQUIRE(r.first_helper_round > 1);
+          const auto& first_helper_round = r.cycles[r.first_helper_round - 1];
+          REQUIRE(first_helper_round.cycle == r.first_helper_round);
           REQUIRE(first_helper_round.visits > 0);
           REQUIRE(first_helper_round.visits <= std::size_t(r.stuck_after_plain_flips));
           ++seeded;
@@ -560,6 +585,58 @@ TEST_CASE("Delaunay repair: every family and start ends equal to CGAL, in both s
       }
   WARN("the repair went past plain flips in " << helped << " runs, " << seeded << " of them on the work queue");
   REQUIRE(seeded > 0);
+}
+
+TEST_CASE("Delaunay repair: the common flips leave exactly the facets not locally Delaunay", "[drivers][exactness]")
+{
+  // A flip visitor turns the repair's own flips off: every flip then goes through the driver.
+  struct Counting_visitor : ES::Default_flip_visitor
+  {
+    std::size_t* flips;
+    void before_flip(const Tr&, const ES::Flip_plan<Tr>&) { ++*flips; }
+  };
+  std::size_t common_flips = 0, left_total = 0, alternated = 0;
+  for(unsigned seed = 1; seed <= 3; ++seed)
+    for(const auto& family : families(seed))
+    {
+      INFO("family " << family.name << ", seed " << seed << ", placing start");
+      Tr start;
+      ES::insert_by_placing(start, family.points);
+      if(start.dimension() != 3) continue;
+      Tr tr = start;
+      auto scan = ES::internal::failing_interior_facets(
+          tr, [&](Tr::Cell_handle c, int i) { return !ES::is_locally_delaunay(tr, c, i); });
+      const auto flips = ES::internal::lawson_flips(tr, scan.first, ES::CGAL_PERTURBATION);
+      REQUIRE(tr.is_valid());
+      std::set<std::array<Point, 3>> left, failing;
+      for(const auto& [c, i] : flips.left) REQUIRE(left.insert(facet_points(c, i)).second); // each once
+      for(const auto& f : tr.finite_facets())
+      {
+        const auto n = f.first->neighbor(f.second);
+        if(!tr.is_infinite(n) && !ES::is_locally_delaunay(tr, f.first, f.second))
+          failing.insert(facet_points(f.first, f.second));
+      }
+      REQUIRE(left == failing);
+      common_flips += flips.swaps[ES::FLIP_2_3] + flips.swaps[ES::FLIP_3_2];
+      left_total += left.size();
+      for(auto c : tr.all_cell_handles()) REQUIRE(c->tds_data().is_clear()); // the marks are left clear
+
+      Tr repaired = start, watched = start;
+      const auto r = CGAL::swap_edges(repaired, ES::Delaunay_criterion());
+      REQUIRE(r.ending == ES::CONVERGED);
+      REQUIRE(ES::compare_with_delaunay(repaired).identical);
+      if(r.repair_path == ES::HELPER_FLIPS && r.number_of_cycles() > r.first_helper_round - 1 + r.helper_rounds) ++alternated;
+      std::size_t counted = 0;
+      const auto w = CGAL::swap_edges(watched, ES::Delaunay_criterion(), CGAL::parameters::visitor(Counting_visitor{{}, &counted}));
+      REQUIRE(w.ending == ES::CONVERGED);
+      REQUIRE(cell_set(watched) == cell_set(repaired));
+      const auto s = w.total_swaps();
+      REQUIRE(counted == s[0] + s[1] + s[2] + s[3]);
+    }
+  WARN(common_flips << " common flips, " << left_total << " facets left to the driver, " << alternated
+                    << " repairs alternating helper and plain rounds");
+  REQUIRE(common_flips > 0);
+  REQUIRE(left_total > 0);
 }
 
 TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")

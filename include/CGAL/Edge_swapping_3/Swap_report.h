@@ -95,7 +95,10 @@ struct Swap_report
   /// Delaunay repair only: the last step taken.
   Delaunay_repair_path repair_path = PLAIN_FLIPS;
   long long stuck_after_plain_flips = 0; ///< Delaunay repair: the non-Delaunay facets plain flips left
-  std::size_t helper_rounds = 0;         ///< Delaunay repair: the rounds of the helper step
+  /// Delaunay repair: the rounds of the helper strategy (not those of plain
+  /// flips between them, see `swap_edges()`).
+  std::size_t helper_rounds = 0;
+  std::size_t first_helper_round = 0;    ///< Delaunay repair: the number of the helper's first round (0: none)
   std::size_t rebuilt_cells = 0;         ///< Delaunay repair: the finite cells the rebuild replaced (0 if not needed)
 
   /// The number of rounds.

@@ -19,7 +19,7 @@
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
-#include <CGAL/Edge_swapping_3/internal/orientations_with_apex.h>
+#include <CGAL/Edge_swapping_3/internal/common_flips.h>
 #include <CGAL/Edge_swapping_3/internal/split_with_data.h>
 #include <array>
 #include <type_traits>
@@ -161,14 +161,8 @@ bool plan_link_flip(const Tr& tr, typename Tr::Cell_handle c, int i, Flip_plan<T
 enum Link_flip_outcome { LINK_DELAUNAY, LINK_FLIPPED, LINK_NOT_FLIPPABLE_NOW, LINK_NEEDS_GENERAL_FLIP };
 
 // The finite link facet (c, i) of v, tested and, in the two common cases,
-// flipped in place by CGAL's own combinatorial flips
-// (Triangulation_data_structure_3::flip_flippable), for a triangulation whose
-// cells carry no data: the 2-3 flip when the apex e across the facet lies
-// strictly inside the wedge of c at that facet, the 3-2 flip when it lies
-// strictly beyond exactly one facet of c through v and the edge opposite has
-// three cells. Exact tests equivalent to those of is_locally_delaunay and
-// classify_facet decide it. A degenerate or hull case is left to the general
-// planned flip.
+// flipped in place (internal/common_flips.h), for a triangulation whose cells
+// carry no data. A degenerate or hull case is left to the general planned flip.
 template <class Tr>
 Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int i,
                                          typename Tr::Vertex_handle v, Perturbation perturbation,
@@ -177,61 +171,19 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
 {
   const auto n = c->neighbor(i);
   if(tr.is_infinite(c) || tr.is_infinite(n)) return LINK_NEEDS_GENERAL_FLIP;
-  const auto apex = n->vertex(n->index(c));
-  const auto& e = apex->point();
   // v in the sphere of n, as CGAL's conflict test asks: for a shared facet,
   // the same answer as the apex in the sphere of c, perturbed or not.
   if(side_of_oriented_sphere(tr.geom_traits(), n->vertex(0)->point(), n->vertex(1)->point(),
                              n->vertex(2)->point(), n->vertex(3)->point(), v->point(),
                              perturbation == CGAL_PERTURBATION) != ON_POSITIVE_SIDE)
     return LINK_DELAUNAY;
-  // The signs of the barycentric coordinates of e in c (appendix A).
-  typedef typename Tr::Geom_traits Gt;
-  const std::array<const typename Tr::Point*, 4> p = {&c->vertex(0)->point(), &c->vertex(1)->point(),
-                                                      &c->vertex(2)->point(), &c->vertex(3)->point()};
-  std::array<Orientation, 4> o;
-  if constexpr(has_double_coordinates<Gt>())
-    o = orientations_with_apex(tr.geom_traits(), p, i, e);
-  else
-    for(int k = 0; k < 4; ++k)
-      if(k != i)
-      {
-        auto q = p;
-        q[k] = &e;
-        o[k] = tr.geom_traits().orientation_3_object()(*q[0], *q[1], *q[2], *q[3]);
-      }
-  int k_neg = -1;
-  for(int k = 0; k < 4; ++k)
-  {
-    if(k == i) continue;
-    if(o[k] == COPLANAR) return LINK_NEEDS_GENERAL_FLIP;
-    if(o[k] == NEGATIVE)
-    {
-      // Concave at the edge opposite k: flippable only if that edge has three
-      // cells and the apex is beyond no other facet through v.
-      if(k_neg >= 0 || !c->neighbor(k)->has_vertex(apex)) return LINK_NOT_FLIPPABLE_NOW;
-      k_neg = k;
-    }
-  }
-  auto& tds = tr.tds();
-  if(k_neg < 0)
-  {
-    tds.flip_flippable(c, i); // c and n become two of the new cells
-    const auto third = c->neighbor((i + 2) & 3);
-    push_link_cell<Tr>(queue, c);
-    push_link_cell<Tr>(queue, n);
-    push_link_cell<Tr>(queue, third);
-    ++result.swaps[FLIP_2_3];
-    return LINK_FLIPPED;
-  }
-  const auto t = c->neighbor(k_neg);
-  int a = -1, b = -1;
-  for(int k = 0; k < 4; ++k)
-    if(k != i && k != k_neg) (a < 0 ? a : b) = k;
-  tds.flip_flippable(c, a, b); // c goes; n and t become the two new cells
-  push_link_cell<Tr>(queue, n);
-  push_link_cell<Tr>(queue, t); // queued already if its old link facet was not yet tested
-  ++result.swaps[FLIP_3_2];
+  const internal::Common_flip flip = internal::common_flip_at(tr, c, i);
+  if(flip.kind == internal::NEEDS_GENERAL_FLIP) return LINK_NEEDS_GENERAL_FLIP;
+  if(flip.kind == internal::NOT_FLIPPABLE_NOW) return LINK_NOT_FLIPPABLE_NOW;
+  std::array<typename Tr::Cell_handle, 3> made;
+  const int m = internal::make_common_flip(tr, c, i, flip, made);
+  for(int k = 0; k < m; ++k) push_link_cell<Tr>(queue, made[k]); // a 3-2 cell may be queued already
+  ++result.swaps[m == 3 ? FLIP_2_3 : FLIP_3_2];
   return LINK_FLIPPED;
 }
 

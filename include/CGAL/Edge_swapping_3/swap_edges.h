@@ -19,6 +19,7 @@
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
 #include <CGAL/Edge_swapping_3/internal/facet_scan.h>
+#include <CGAL/Edge_swapping_3/internal/lawson_flips.h>
 #include <CGAL/Edge_swapping_3/internal/swap_driver.h>
 #include <type_traits>
 
@@ -142,7 +143,7 @@ auto with_driver(Tr& tr, const Driver_settings& s, const Constraints& constraint
 /// The helper; its first round visits `seeds` only when there are any.
 template <class Tr, class Constraints, class NamedParameters>
 Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np,
-                       const std::vector<Facet_key<Tr>>& seeds = {})
+                       const std::vector<Facet_key<Tr>>& seeds = {}, std::vector<Facet_key<Tr>>* left = nullptr)
 {
   static_assert(!Is_weighted_point<typename Tr::Point>::value,
                 "the helper strategy is for Delaunay triangulations of bare points");
@@ -154,6 +155,7 @@ Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& cons
     Helper_rule rule{s.reading.swap_condition};
     Swap_report report = driver.run(rule);
     decide_delaunay_ending(report, driver, s);
+    if(left && report.ending != CONVERGED && s.schedule == WORK_QUEUE) *left = driver.non_delaunay_facets_kept();
     return report;
   });
 }
@@ -168,70 +170,130 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
   static_assert(!delaunay || !Is_weighted_point<typename Tr::Point>::value,
                 "a regular triangulation needs the power criterion, not the Delaunay one (not in the package yet)");
 
+  CGAL::Real_timer total; // the report's time: the whole call
+  total.start();
   const Driver_settings s = driver_settings(np, STORAGE_ORDER);
-  // Where plain flips are stuck: the facets left, for the helper's first round.
-  std::vector<Facet_key<Tr>> stuck;
   const unsigned threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u);
-  Swap_report report = with_driver(tr, s, constraints, np, [&](auto& driver) {
-    Criterion_rule<Criterion> rule{criterion, s.perturbation};
-    // Delaunay: the rule decides nothing on a locally Delaunay facet, so the
-    // first round is a scan of every facet with the in-sphere test alone (on
-    // `number_of_threads` threads), and the driver visits the facets that
-    // failed it, in the same order whatever the number of threads.
-    CGAL::Real_timer scan_timer;
-    if constexpr(delaunay)
-      if(s.schedule == WORK_QUEUE && tr.dimension() == 3)
+  const bool repair = choose_parameter(get_parameter(np, internal_np::delaunay_repair), true);
+  typedef std::vector<std::pair<typename Tr::Cell_handle, int>> Facets;
+  // The repair in storage order, where no visitor watches the visits or the
+  // flips and no constraint or cell data must follow them, makes the common
+  // plain flips itself (internal/lawson_flips.h) before the driver's.
+  typedef decltype(choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor()))
+      Flip_visitor_type;
+  typedef decltype(choose_parameter(get_parameter(np, internal_np::visit_visitor), No_visit_visitor()))
+      Visit_visitor_type;
+  constexpr bool unwatched = delaunay && std::is_same<Constraints, No_constraints>::value &&
+                             std::is_same<std::decay_t<Flip_visitor_type>, Default_flip_visitor>::value &&
+                             std::is_same<std::decay_t<Visit_visitor_type>, No_visit_visitor>::value;
+  const bool lawson = unwatched && repair && s.schedule == WORK_QUEUE && s.face_order == STORAGE_ORDER &&
+                      s.perturbation == CGAL_PERTURBATION && tr.dimension() == 3;
+
+  // Plain flips from `seeds` (the facets that need a visit; `scanned` facets
+  // were tested to find them), or from every facet without `seeds`. Returns
+  // the facets left not locally Delaunay in `stuck`.
+  auto plain_flips = [&](Facets* seeds, std::size_t scanned, std::vector<Facet_key<Tr>>& stuck) {
+    Cycle_record first_flips; // made before the driver, in its first round
+    if constexpr(unwatched)
+      if(seeds && lawson)
       {
-        scan_timer.start();
-        const auto scan = failing_interior_facets(
-            tr, [&](typename Tr::Cell_handle c, int i) { return !is_locally_delaunay(tr, c, i, s.perturbation); },
-            threads);
-        driver.seed_scanned(scan.first, scan.second);
-        scan_timer.stop();
+        auto flips = lawson_flips(tr, *seeds, s.perturbation);
+        *seeds = std::move(flips.left);
+        first_flips.visits = flips.visits;
+        first_flips.swaps = flips.swaps;
       }
-    Swap_report r = driver.run(rule);
-    r.seconds += scan_timer.time(); // the scan is round 1's first part
-    if constexpr(delaunay)
+    return with_driver(tr, s, constraints, np, [&](auto& driver) {
+      Criterion_rule<Criterion> rule{criterion, s.perturbation};
+      if(seeds) driver.seed_scanned(*seeds, scanned, first_flips);
+      Swap_report r = driver.run(rule);
+      if constexpr(delaunay)
+      {
+        decide_delaunay_ending(r, driver, s);
+        if(r.ending != CONVERGED && s.schedule == WORK_QUEUE) stuck = driver.non_delaunay_facets_kept();
+      }
+      return r;
+    });
+  };
+
+  // Delaunay: the rule decides nothing on a locally Delaunay facet, so the
+  // first round is a scan of every facet with the in-sphere test alone (on
+  // `number_of_threads` threads), and the driver visits the facets that
+  // failed it, in the same order whatever the number of threads.
+  std::vector<Facet_key<Tr>> stuck; // where plain flips are stuck: the facets left
+  Swap_report report;
+  bool scanned = false;
+  if constexpr(delaunay)
+    if(s.schedule == WORK_QUEUE && tr.dimension() == 3)
     {
-      decide_delaunay_ending(r, driver, s);
-      if(r.ending != CONVERGED && s.schedule == WORK_QUEUE) stuck = driver.non_delaunay_facets_kept();
+      auto scan = failing_interior_facets(
+          tr, [&](typename Tr::Cell_handle c, int i) { return !is_locally_delaunay(tr, c, i, s.perturbation); },
+          threads);
+      report = plain_flips(&scan.first, scan.second, stuck); // the scan is round 1's first part
+      scanned = true;
     }
-    return r;
-  });
+  if(!scanned) report = plain_flips(nullptr, 0, stuck);
   if constexpr(delaunay)
   {
-    if(report.ending == CONVERGED || !choose_parameter(get_parameter(np, internal_np::delaunay_repair), true))
+    if(report.ending == CONVERGED || !repair)
+    {
+      report.seconds = total.time();
       return report;
+    }
 
     // Stuck (or out of rounds): the helper, then the rebuild.
     report.stuck_after_plain_flips = report.non_delaunay_facets;
-    Driver_settings hs = driver_settings(np, RANDOM_ORDER);
-    hs.max_rounds = choose_parameter(get_parameter(np, internal_np::helper_rounds_before_rebuild), std::size_t(100));
-    // Without tags the helper does nothing on a Delaunay facet: its first
-    // round needs only the facets plain flips left.
-    Swap_report helper = run_helper(tr, hs, constraints, np, stuck);
     report.repair_path = HELPER_FLIPS;
-    report.helper_rounds = helper.number_of_cycles();
-    for(Cycle_record r : helper.cycles)
+    report.first_helper_round = report.cycles.size() + 1;
+    Driver_settings hs = driver_settings(np, RANDOM_ORDER);
+    const std::size_t helper_rounds =
+        choose_parameter(get_parameter(np, internal_np::helper_rounds_before_rebuild), std::size_t(100));
+    auto append = [&](const Swap_report& part) {
+      for(Cycle_record r : part.cycles)
+      {
+        r.cycle += report.cycles.size();
+        report.cycles.push_back(r);
+      }
+      report.ending = part.ending;
+      report.non_delaunay_facets = part.non_delaunay_facets;
+    };
+    // Without tags the helper does nothing on a Delaunay facet: its first
+    // round needs only the facets plain flips left. With the common flips,
+    // the helper runs two rounds (one tags, one swaps), then plain flips
+    // until they are stuck again (the helper's own plain swaps cost several
+    // times more), then the helper for twice as many rounds, and so on:
+    // plain flips can undo what a short helper run did (its tags are lost).
+    for(std::size_t burst = 2; report.helper_rounds < helper_rounds; burst *= 2)
     {
-      r.cycle += report.cycles.size();
-      report.cycles.push_back(r);
+      hs.max_rounds = helper_rounds - report.helper_rounds;
+      if(lawson) hs.max_rounds = (std::min)(hs.max_rounds, burst);
+      std::vector<Facet_key<Tr>> left;
+      const Swap_report helper = run_helper(tr, hs, constraints, np, stuck, &left);
+      report.helper_rounds += helper.number_of_cycles();
+      append(helper);
+      if(report.ending == CONVERGED || !lawson || helper.number_of_cycles() == 0) break;
+      Facets seeds;
+      for(const auto& key : left)
+      {
+        typename Tr::Cell_handle c;
+        int i;
+        if(find_facet(tr, key, typename Tr::Cell_handle(), c, i)) seeds.emplace_back(c, i);
+      }
+      stuck.clear();
+      const std::size_t n_seeds = seeds.size();
+      append(plain_flips(&seeds, n_seeds, stuck));
+      if(report.ending == CONVERGED) break;
+      ++hs.random_seed; // another order next time
     }
-    report.seconds += helper.seconds;
-    report.ending = helper.ending;
-    report.non_delaunay_facets = helper.non_delaunay_facets;
     // A domain mesh is never rebuilt: the rebuild knows no constraint.
     if(report.ending != CONVERGED && std::is_same<Constraints, No_constraints>::value)
     {
-      CGAL::Real_timer timer;
-      timer.start();
       report.repair_path = REBUILT;
       report.rebuilt_cells = rebuild_as_delaunay(tr);
       report.ending = CONVERGED;
       report.non_delaunay_facets = 0;
-      report.seconds += timer.time();
     }
   }
+  report.seconds = total.time();
   return report;
 }
 
@@ -252,6 +314,17 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 /// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
 /// whose ending is then `CONVERGED` or `STUCK`. A domain mesh is never
 /// rebuilt: its repair ends after the helper step.
+///
+/// The repair of an unconstrained triangulation on the work queue in storage
+/// order, with no `visitor` or `visit_visitor` and `CGAL_PERTURBATION` (the
+/// defaults), makes the common plain flips (2-3 and 3-2) itself in round 1,
+/// in place, from each facet the scan found not locally Delaunay in turn, and
+/// leaves the rest to the driver; where plain flips are stuck, it alternates
+/// runs of the helper strategy (2 rounds, then 4, 8, ..., each in a new
+/// random order) with plain flips until they are stuck again. Every swap is
+/// still one the plain rule or the helper rule makes.
+/// `report.helper_rounds` counts the helper's rounds, and
+/// `report.first_helper_round` is the number of its first round.
 ///
 /// \tparam Tr a `CGAL::Triangulation_3` (or a class derived from one, such as the
 ///   triangulation of a `Mesh_complex_3_in_triangulation_3`)

@@ -321,7 +321,10 @@ public:
   /// facets that a scan of all `scanned` interior facets found to need a visit
   /// (those the rule decides nothing on are not queued). The round counts the
   /// scan's visits, so that every interior facet is visited once in it.
-  void seed_scanned(const std::vector<std::pair<Cell_handle, int>>& facets, std::size_t scanned)
+  /// `earlier`: visits and swaps of round 1 made before the driver (the
+  /// Delaunay repair's first flips), added to its record.
+  void seed_scanned(const std::vector<std::pair<Cell_handle, int>>& facets, std::size_t scanned,
+                    const Cycle_record& earlier = Cycle_record())
   {
     if constexpr(tracing)
     {
@@ -345,7 +348,8 @@ public:
     }
     for(const auto& [c, i] : facets) queue_facet(c, i);
     seeded_ = true;
-    scanned_visits_ = scanned - (std::min)(scanned, facets.size());
+    scanned_visits_ = scanned - (std::min)(scanned, facets.size()) + earlier.visits;
+    first_round_swaps_ = earlier.swaps;
   }
 
   /// After a work-queue run: the interior facets that are not locally
@@ -705,9 +709,24 @@ private:
     for(auto& entry : entries) entry = keyed[k++].second;
   }
 
+  /// `tr_.number_of_finite_cells()` without a sweep: no flip changes the
+  /// vertices, hence neither the hull's vertices nor its number of facets,
+  /// which is the number of infinite cells.
+  std::size_t number_of_finite_cells()
+  {
+    if(tr_.dimension() != 3) return tr_.number_of_finite_cells();
+    if(infinite_cells_ == 0)
+    {
+      std::vector<Cell_handle> outside;
+      tr_.incident_cells(tr_.infinite_vertex(), std::back_inserter(outside));
+      infinite_cells_ = outside.size();
+    }
+    return tr_.number_of_cells() - infinite_cells_;
+  }
+
   void end_round(Swap_report& report)
   {
-    record_.cells = tr_.number_of_finite_cells();
+    record_.cells = number_of_finite_cells();
     if(settings_.record_non_delaunay_facets)
       record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
     report.cycles.push_back(record_);
@@ -1108,6 +1127,7 @@ private:
           record_ = Cycle_record();
           record_.cycle = 1;
           record_.visits = scanned_visits_;
+          record_.swaps = first_round_swaps_;
           end_round(report);
         }
         report.ending = CONVERGED;
@@ -1121,7 +1141,11 @@ private:
       if(settings_.face_order == PRIORITY_ORDER) sort_by_priority(queue_, true);
       record_ = Cycle_record();
       record_.cycle = r;
-      if(r == 1) record_.visits = scanned_visits_;
+      if(r == 1)
+      {
+        record_.visits = scanned_visits_;
+        record_.swaps = first_round_swaps_;
+      }
       while(round_left_ > 0)
       {
         --round_left_;
@@ -1170,10 +1194,12 @@ private:
   bool first_round_ = false;
   bool seeded_ = false;              // the first round's facets were given (a scan found them)
   std::size_t scanned_visits_ = 0;   // the scan's visits of facets not queued
+  std::array<std::size_t, number_of_flip_kinds> first_round_swaps_{}; // made before the driver
 
   mutable Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> index_;
   mutable std::vector<State> state_; // by slot: the bits above
   bool any_tag_ = false;
+  std::size_t infinite_cells_ = 0;  // 0 until counted
   bool either_side_ = false;                 // the rule sees a facet from either of its cells
   std::deque<std::uint32_t> queue_;          // facets as slot and index, in queueing order
   std::size_t round_left_ = 0;               // entries of the round under way at the front of queue_
