@@ -193,9 +193,9 @@ int main(int argc, char** argv)
                 ours.values[3], ours.values[5], ours_seconds / cgal.values[0], ours.values[5] / cgal.peak_mib,
                 ending == ES::CONVERGED ? "converged" : ending == ES::STUCK ? "stuck" : "limit", ours.values[7],
                 ours.values[4] == 1 ? "yes" : "no");
-    std::printf("%9s   repair from the same placing start (placing %.2f s, CGAL %.2f s): %.2f s, %.0f rounds, %.0f swaps, %s (plain flips left %.0f "
+    std::printf("%9s   repair from the same placing start (placing %.2f s, CGAL %.2f s, TetGen %.2f s): %.2f s, %.0f rounds, %.0f swaps, %s (plain flips left %.0f "
                 "facets, helper rounds %.0f), %.0f MiB, (placing + repair) / CGAL %.1f, memory / CGAL %.1f, equal to CGAL: %s\n",
-                "", repair.values[8], cgal.values[0], repair.values[0], repair.values[2], repair.values[1],
+                "", repair.values[8], cgal.values[0], tet.values[0], repair.values[0], repair.values[2], repair.values[1],
                 ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(repair.values[3]))), repair.values[4],
                 repair.values[5], repair.values[6], (repair.values[8] + repair.values[0]) / cgal.values[0],
                 repair.values[6] / cgal.peak_mib, repair.values[7] == 1 ? "yes" : "no");
