@@ -554,6 +554,40 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
   }
 }
 
+TEST_CASE("Delaunay repair: the rebuild, by flip insertion or by CGAL, puts CGAL's cells on the same vertices", "[drivers][exactness]")
+{
+  std::size_t rebuilt = 0;
+  for(unsigned seed = 1; seed <= 2; ++seed)
+    for(const auto& family : families(seed))
+      for(bool by_cgal : {false, true})
+      {
+        INFO("family " << family.name << ", seed " << seed << ", placing start, " << (by_cgal ? "CGAL" : "flip insertion"));
+        Tr tr;
+        ES::insert_by_placing(tr, family.points);
+        if(tr.dimension() != 3) continue;
+        std::vector<Vertex_handle> vertices(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end());
+        std::set<const void*> before; // the vertices themselves (and so their data) stay
+        for(auto v : vertices) before.insert(&*v);
+        if(by_cgal)
+        {
+          tr.tds().cells().clear();
+          ES::internal::rebuild_with_cgal(tr, vertices);
+        }
+        else
+        {
+          const std::size_t made = ES::internal::rebuild_as_delaunay(tr);
+          REQUIRE(made == tr.number_of_finite_cells());
+        }
+        REQUIRE(tr.is_valid());
+        REQUIRE(ES::compare_with_delaunay(tr).identical);
+        std::set<const void*> after;
+        for(auto v : tr.finite_vertex_handles()) after.insert(&*v);
+        REQUIRE(after == before);
+        ++rebuilt;
+      }
+  REQUIRE(rebuilt > 10);
+}
+
 TEST_CASE("Delaunay repair: every family and start ends equal to CGAL, in both schedules", "[drivers][exactness]")
 {
   std::size_t helped = 0, seeded = 0;

@@ -1,7 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The last step of the Delaunay repair: the cells of a triangulation replaced
-// by those of CGAL's Delaunay triangulation of its vertices. The vertices (and
+// by those of the Delaunay triangulation of its vertices. The vertices (and
 // their data) stay; every cell is new.
+//
+// The rebuild is the paper's own flip insertion (`delaunay_by_insertion`,
+// which Joe 1991 proves ends on Delaunay; with CGAL's perturbation it gives
+// CGAL's cells) into a second triangulation, whose cells are then moved into
+// `tr` onto its own vertices. Only the old vertices and the new triangulation
+// are held at once. Should an insertion leave a facet stuck (never observed),
+// CGAL's `Delaunay_triangulation_3` rebuilds instead.
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_REBUILD_DELAUNAY_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_REBUILD_DELAUNAY_H
@@ -9,6 +16,8 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/Edge_swapping_3/delaunay_by_insertion.h>
+#include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -18,37 +27,24 @@ namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
 
-/// Returns the number of finite cells made. `tr` must be of dimension 3 and
-/// its points distinct (a valid triangulation), so no vertex is lost.
-///
-/// Memory: CGAL's triangulation and ours are never held at once. Our cells
-/// go first; CGAL's cells are copied into two arrays of 32-bit numbers
-/// (vertices and neighbours, 32 bytes a cell) and freed; ours are made from
-/// the arrays.
+// The cells of CGAL's Delaunay triangulation of `vertices` made in the empty
+// TDS of `tr`. CGAL's cells are copied into two arrays of 32-bit numbers
+// (vertices and neighbours, 32 bytes a cell) and freed before ours are made.
 template <class Tr>
-std::size_t rebuild_as_delaunay(Tr& tr)
+void rebuild_with_cgal(Tr& tr, const std::vector<typename Tr::Vertex_handle>& vertices)
 {
   typedef typename Tr::Geom_traits Gt;
-  typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Gt> Vb;
   typedef CGAL::Triangulation_cell_base_with_info_3<std::uint32_t, Gt, CGAL::Delaunay_triangulation_cell_base_3<Gt>> Cb;
   typedef CGAL::Delaunay_triangulation_3<Gt, CGAL::Triangulation_data_structure_3<Vb, Cb>> Delaunay;
 
   // Vertex k + 1 is vertices[k]; 0 is the infinite vertex.
-  std::vector<Vertex_handle> vertices;
-  vertices.reserve(tr.number_of_vertices());
   std::vector<std::array<std::uint32_t, 4>> cell_vertices, cell_neighbors;
-  std::size_t finite_cells = 0;
   {
     std::vector<std::pair<typename Tr::Point, std::uint32_t>> points;
-    points.reserve(tr.number_of_vertices());
-    for(Vertex_handle v : tr.finite_vertex_handles())
-    {
-      vertices.push_back(v);
-      points.emplace_back(v->point(), std::uint32_t(vertices.size()));
-    }
-    tr.tds().cells().clear();
+    points.reserve(vertices.size());
+    for(std::size_t k = 0; k < vertices.size(); ++k) points.emplace_back(vertices[k]->point(), std::uint32_t(k + 1));
     Delaunay dt(points.begin(), points.end(), tr.geom_traits());
     CGAL_assertion(dt.number_of_vertices() == vertices.size() && dt.dimension() == 3);
     points = {};
@@ -63,7 +59,6 @@ std::size_t rebuild_as_delaunay(Tr& tr)
         cell_vertices[c->info()][i] = c->vertex(i)->info();
         cell_neighbors[c->info()][i] = c->neighbor(i)->info();
       }
-    finite_cells = dt.number_of_finite_cells();
   }
   auto vertex_of = [&](std::uint32_t k) { return k == 0 ? tr.infinite_vertex() : vertices[k - 1]; };
   auto& tds = tr.tds();
@@ -80,7 +75,50 @@ std::size_t rebuild_as_delaunay(Tr& tr)
       made[k]->set_neighbor(i, made[cell_neighbors[k][i]]);
       made[k]->vertex(i)->set_cell(made[k]);
     }
-  return finite_cells;
+}
+
+/// Returns the number of finite cells made. `tr` must be of dimension 3 and
+/// its points distinct (a valid triangulation), so no vertex is lost. If an
+/// exception is thrown, `tr` is left without cells.
+template <class Tr>
+std::size_t rebuild_as_delaunay(Tr& tr)
+{
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  std::vector<Vertex_handle> vertices;
+  vertices.reserve(tr.number_of_vertices());
+  for(Vertex_handle v : tr.finite_vertex_handles()) vertices.push_back(v);
+  tr.tds().cells().clear();
+  {
+    Tr built(tr.geom_traits());
+    std::vector<Vertex_handle> made; // made[k] in `built` is vertices[k]
+    {
+      std::vector<typename Tr::Point> points;
+      points.reserve(vertices.size());
+      for(Vertex_handle v : vertices) points.push_back(v->point());
+      auto report = delaunay_by_insertion(built, points);
+      if(report.stuck_facets == 0 && built.dimension() == 3) made = std::move(report.vertices);
+    }
+    if(!made.empty())
+    {
+      // Each vertex of `built` by its slot number, replaced by ours.
+      Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> index(built.tds().vertices());
+      std::vector<Vertex_handle> ours(index.number_of_slots());
+      for(std::size_t k = 0; k < made.size(); ++k) ours[index(made[k])] = vertices[k];
+      ours[index(built.infinite_vertex())] = tr.infinite_vertex();
+      made = {};
+      for(auto c : built.tds().cell_handles())
+        for(int i = 0; i < 4; ++i)
+        {
+          const Vertex_handle v = ours[index(c->vertex(i))];
+          c->set_vertex(i, v);
+          v->set_cell(c);
+        }
+      tr.tds().cells().swap(built.tds().cells()); // `built` goes with its vertices alone
+      return tr.number_of_finite_cells();
+    }
+  }
+  rebuild_with_cgal(tr, vertices);
+  return tr.number_of_finite_cells();
 }
 
 } // namespace internal
