@@ -19,6 +19,7 @@
 
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/internal/common_flips.h>
+#include <algorithm>
 #include <array>
 #include <deque>
 #include <utility>
@@ -56,6 +57,24 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
     c->tds_data().mark_in_conflict();
     queue.push_back(c);
   };
+  // A cell set aside, then queued again and set aside again, is listed
+  // twice, and a listed cell may be freed: far from Delaunay the list would
+  // grow with the flips (to 10 times the cells set aside at 10^5 points).
+  // When it doubles it is cut to the cells still set aside, each once (the
+  // mark in conflict meanwhile says "listed").
+  std::size_t compact_at = 4096;
+  auto compact_aside = [&]() {
+    std::size_t kept = 0;
+    for(Cell_handle c : aside)
+      if(cells.is_used(c) && c->tds_data().is_on_boundary())
+      {
+        c->tds_data().mark_in_conflict();
+        aside[kept++] = c;
+      }
+    aside.resize(kept);
+    for(Cell_handle c : aside) c->tds_data().mark_on_boundary();
+    compact_at = (std::max)(compact_at, 2 * kept);
+  };
   std::array<Cell_handle, 3> made;
   bool progress = false;
   // Tests the interior facet (c, i); flips it if it fails and a common flip
@@ -70,6 +89,7 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
       {
         c->tds_data().mark_on_boundary();
         aside.push_back(c);
+        if(aside.size() >= compact_at) compact_aside();
       }
       return false;
     }
