@@ -91,9 +91,10 @@ inline std::pair<double, double> run_program(const std::vector<std::string>& arg
   return {t.time(), double(usage.ru_maxrss) / 1024.0};
 }
 
-inline std::vector<K::Point_3> random_points(std::size_t n)
+// The benchmarks' points: `n` uniform in the unit cube from CGAL::Random(seed).
+inline std::vector<K::Point_3> random_points(std::size_t n, int seed = 1)
 {
-  CGAL::Random rng(1);
+  CGAL::Random rng(seed);
   std::vector<K::Point_3> points;
   for(std::size_t k = 0; k < n; ++k) points.emplace_back(rng.get_double(), rng.get_double(), rng.get_double());
   return points;
@@ -101,9 +102,9 @@ inline std::vector<K::Point_3> random_points(std::size_t n)
 
 // CGAL's Delaunay_triangulation_3 of the points, timed (its range constructor
 // sorts them spatially).
-inline void cgal_delaunay(std::size_t n, double* out)
+inline void cgal_delaunay(std::size_t n, double* out, int seed = 1)
 {
-  const auto points = random_points(n);
+  const auto points = random_points(n, seed);
   CGAL::Real_timer t;
   t.start();
   CGAL::Delaunay_triangulation_3<K> dt(points.begin(), points.end());
@@ -111,14 +112,14 @@ inline void cgal_delaunay(std::size_t n, double* out)
 }
 
 // TetGen's own "Delaunay seconds" on the points (file reading excluded), or -1.
-inline void tetgen(std::size_t n, double* out)
+inline void tetgen(std::size_t n, double* out, int seed = 1)
 {
   if(std::system("command -v tetgen > /dev/null 2>&1") != 0) return;
   const std::string stem =
       (std::filesystem::temp_directory_path() / ("edge_swapping_3_bench_" + std::to_string(::getpid()))).string();
   {
     std::vector<std::array<double, 3>> p;
-    for(const auto& q : random_points(n)) p.push_back({q.x(), q.y(), q.z()});
+    for(const auto& q : random_points(n, seed)) p.push_back({q.x(), q.y(), q.z()});
     std::ofstream file(stem + ".node");
     ES::IO::write_node_file(file, p, {}, 1);
   }

@@ -4,8 +4,10 @@
 // Delaunay on the same points, in one run. Each contender runs in a child
 // process of its own, so that its peak memory is its own.
 //
-//   benchmark_helper_vs_cgal [--max-cycles C] [--stall-dir DIR] [--no-pure-helper] [N ...]
-//                            (default: 1000 cycles; 100000 1000000)
+//   benchmark_helper_vs_cgal [--max-cycles C] [--stall-dir DIR] [--no-pure-helper] [--seed S] [N ...]
+//                            (default: 1000 cycles; seed 1; 100000 1000000)
+//
+// --seed S takes the points (for every contender) from CGAL::Random(S).
 //
 // --no-pure-helper leaves out the pure helper run (the longest: past 2,000 s
 // at 10^6 points), keeping CGAL, TetGen and the repair.
@@ -109,11 +111,13 @@ int main(int argc, char** argv)
   std::size_t max_cycles = 1000;
   std::string stall_dir;
   bool pure_helper = true;
+  int seed = 1;
   for(int a = 1; a < argc; ++a)
   {
     if(std::string(argv[a]) == "--max-cycles" && a + 1 < argc) max_cycles = std::stoul(argv[++a]);
     else if(std::string(argv[a]) == "--stall-dir" && a + 1 < argc) stall_dir = argv[++a];
     else if(std::string(argv[a]) == "--no-pure-helper") pure_helper = false;
+    else if(std::string(argv[a]) == "--seed" && a + 1 < argc) seed = std::stoi(argv[++a]);
     else sizes.push_back(std::stoul(argv[a]));
   }
   if(sizes.empty()) sizes = {100000, 1000000};
@@ -123,10 +127,10 @@ int main(int argc, char** argv)
               "non-Del", "equal");
   for(std::size_t n : sizes)
   {
-    const Measure cgal = in_child([n](double* out) { cgal_delaunay(n, out); });
-    const Measure tet = in_child([n](double* out) { tetgen(n, out); });
-    const Measure ours = !pure_helper ? Measure() : in_child([n, max_cycles, &stall_dir](double* out) {
-      const auto points = random_points(n);
+    const Measure cgal = in_child([n, seed](double* out) { cgal_delaunay(n, out, seed); });
+    const Measure tet = in_child([n, seed](double* out) { tetgen(n, out, seed); });
+    const Measure ours = !pure_helper ? Measure() : in_child([n, seed, max_cycles, &stall_dir](double* out) {
+      const auto points = random_points(n, seed);
       Triangulation tr;
       CGAL::Real_timer t;
       t.start();
@@ -164,9 +168,9 @@ int main(int argc, char** argv)
         std::cerr << "  stalled region: " << write_stalled_region(tr, stall_dir + "/stall_" + std::to_string(n))
                   << " facets not locally Delaunay, written to " << stall_dir << "/stall_" << n << ".*\n";
     });
-    const Measure repair = in_child([n](double* out) {
+    const Measure repair = in_child([n, seed](double* out) {
       Triangulation tr;
-      const auto points = random_points(n);
+      const auto points = random_points(n, seed);
       CGAL::Real_timer t;
       t.start();
       ES::insert_by_placing(tr, points);

@@ -141,8 +141,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   timer.start();
 
   auto score = [&](Cell_handle c) {
-    const double v = criterion.measure(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()), internal::bare_point(c->vertex(2)->point()),
-                                       internal::bare_point(c->vertex(3)->point()));
+    auto at = [&](int i) -> decltype(auto) { return internal::bare_point(c->vertex(i)->point()); };
+    const double v = criterion.measure(at(0), at(1), at(2), at(3));
     return larger_is_worse ? -v : v;
   };
   // Cells outside the domain (subdomain 0 of a domain mesh) are neither
@@ -363,7 +363,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       }
     if((operations & TWO_STEP_EDGE_REMOVAL) && !improved)
     {
-      if(entry.slot >= two_step_tried.size()) two_step_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
+      if(entry.slot >= two_step_tried.size())
+        two_step_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
       const std::uint64_t tried = two_step_tried[entry.slot];
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)

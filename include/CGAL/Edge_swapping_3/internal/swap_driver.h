@@ -320,9 +320,10 @@ public:
   /// Makes the first round of the work queue visit `facets` only: the
   /// facets that a scan of all `scanned` interior facets found to need a visit
   /// (those the rule decides nothing on are not queued). The round counts the
-  /// scan's visits, so that every interior facet is visited once in it.
-  /// `earlier`: visits and swaps of round 1 made before the driver (the
-  /// Delaunay repair's first flips), added to its record.
+  /// scan's visits, so that every interior facet is visited in it (once by
+  /// the scan; again, or first if it is new, when the Delaunay repair's
+  /// first flips test it). `earlier`: visits and swaps of round 1 made before
+  /// the driver (those first flips), added to its record.
   void seed_scanned(const std::vector<std::pair<Cell_handle, int>>& facets, std::size_t scanned,
                     const Cycle_record& earlier = Cycle_record())
   {
