@@ -309,8 +309,9 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 /// triangulation (CGAL's, cell for cell, with `CGAL_PERTURBATION`) from any
 /// valid start: plain flips first; where they are stuck (Joe's local optima),
 /// the helper strategy for at most `helper_rounds_before_rebuild` rounds; where
-/// that has not converged, the cells are rebuilt from CGAL's Delaunay
-/// triangulation of the vertices. `report.repair_path` says which step ended
+/// that has not converged, the cells are rebuilt by flip insertion of the
+/// vertices (`delaunay_by_insertion()`; the vertices stay, every cell is
+/// new). `report.repair_path` says which step ended
 /// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
 /// whose ending is then `CONVERGED` or `STUCK`. A domain mesh is never
 /// rebuilt: its repair ends after the helper step.

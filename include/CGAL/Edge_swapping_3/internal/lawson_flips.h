@@ -59,7 +59,8 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
   };
   // A cell set aside, then queued again and set aside again, is listed
   // twice, and a listed cell may be freed: far from Delaunay the list would
-  // grow with the flips (to 10 times the cells set aside at 10^5 points).
+  // grow with the flips (to two million entries from a placing start of
+  // 10^5 points).
   // When it doubles it is cut to the cells still set aside, each once (the
   // mark in conflict meanwhile says "listed").
   std::size_t compact_at = 4096;

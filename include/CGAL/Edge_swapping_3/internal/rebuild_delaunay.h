@@ -20,6 +20,8 @@
 #include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -44,10 +46,14 @@ void rebuild_with_cgal(Tr& tr, const std::vector<typename Tr::Vertex_handle>& ve
   {
     std::vector<std::pair<typename Tr::Point, std::uint32_t>> points;
     points.reserve(vertices.size());
+    if(vertices.size() >= std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("Edge_swapping_3: the rebuild through CGAL numbers at most 2^32 - 1 vertices");
     for(std::size_t k = 0; k < vertices.size(); ++k) points.emplace_back(vertices[k]->point(), std::uint32_t(k + 1));
     Delaunay dt(points.begin(), points.end(), tr.geom_traits());
     CGAL_assertion(dt.number_of_vertices() == vertices.size() && dt.dimension() == 3);
     points = {};
+    if(dt.number_of_cells() > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("Edge_swapping_3: the rebuild through CGAL numbers at most 2^32 cells");
     dt.infinite_vertex()->info() = 0;
     std::uint32_t n = 0;
     for(auto c : dt.all_cell_handles()) c->info() = n++;
