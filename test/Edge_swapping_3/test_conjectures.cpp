@@ -823,11 +823,15 @@ TEST_CASE("Traces of the work queue: every visit confirmed, round 1 covers the s
   {
     // A number that is not a whole number where a point number goes (found by libFuzzer).
     auto visit = nlohmann::json::parse(lines[no_flip_round_1[0]]);
-    visit["facet"][0] = 3.33e118;
-    std::vector<std::string> bad = lines;
-    bad[no_flip_round_1[0]] = visit.dump();
-    const auto r = check_text(joined(bad));
-    REQUIRE(r.error.find("a number that is not a whole number") != std::string::npos);
+    for(const nlohmann::json& number : {nlohmann::json(3.33e118), nlohmann::json(-1), nlohmann::json(2.5)})
+    {
+      visit["facet"][0] = number;
+      std::vector<std::string> bad = lines;
+      bad[no_flip_round_1[0]] = visit.dump();
+      const auto r = check_text(joined(bad));
+      INFO(number.dump());
+      REQUIRE(r.error.find("a number that is not a whole number") != std::string::npos);
+    }
   }
   {
     // Two visits of round 1 exchanged: out of the fixed order.
@@ -1084,7 +1088,7 @@ TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[
     }
 }
 
-TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points; random orders end with probability one",
+TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
           "[conjectures][traces]")
 {
   auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
@@ -1251,7 +1255,7 @@ TEST_CASE("The trace checker rejects altered traces, naming the line", "[conject
   REQUIRE_FALSE(check_text(joined(with_infinite)).ok);
 }
 
-TEST_CASE("edge_swap replay --trace writes the trace the checker confirms; insertion cases are refused",
+TEST_CASE("edge_swap replay --trace writes the trace the checker confirms, and insertion cases are refused",
           "[conjectures][traces][program]")
 {
   test::Workdir w;

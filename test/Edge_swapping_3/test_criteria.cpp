@@ -63,7 +63,7 @@ TEST_CASE("Aspect ratio - both definitions: the largest ratio never grows", "[cr
   }
 }
 
-TEST_CASE("Minimum edges: the counts never grow; 8 000 points lose at least 10% of their cells", "[criteria]")
+TEST_CASE("Minimum edges: the counts never grow, and 8 000 points lose at least 10% of their cells", "[criteria]")
 {
   const unsigned seed = 1;
   INFO("8000 points in a cube, seed " << seed);

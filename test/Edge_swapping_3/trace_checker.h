@@ -109,10 +109,13 @@ inline std::uint64_t point_key(std::uint64_t seed, const Point& p)
 }
 
 /// A whole number of the trace: a JSON number that is a non-negative integer
-/// (a float, a negative or a huge number is a Failure, not a conversion).
+/// (a float, a negative or a huge number is a Failure, not a conversion). A
+/// parsed trace holds them as unsigned; a header made in C++ from `int`
+/// literals (the adversarial search's) holds them as signed.
 inline std::uint64_t whole(const nlohmann::json& j)
 {
-  require(j.is_number_unsigned(), "a number that is not a whole number");
+  require(j.is_number_unsigned() || (j.is_number_integer() && j.get<std::int64_t>() >= 0),
+          "a number that is not a whole number");
   return j.get<std::uint64_t>();
 }
 
