@@ -673,6 +673,29 @@ TEST_CASE("Delaunay repair: the common flips leave exactly the facets not locall
   REQUIRE(left_total > 0);
 }
 
+TEST_CASE("Delaunay repair: the common flips cut their list of cells set aside and still leave exactly the failing facets", "[drivers][exactness]")
+{
+  // Far from Delaunay (a placing start of 20,000 points) the list of cells
+  // set aside passes 4,096 entries and is cut to the live ones.
+  const unsigned seed = 5;
+  INFO("random_in_cube(20000, " << seed << "), placing start");
+  Tr tr;
+  ES::insert_by_placing(tr, random_in_cube(20000, seed));
+  auto scan = ES::internal::failing_interior_facets(
+      tr, [&](Tr::Cell_handle c, int i) { return !ES::is_locally_delaunay(tr, c, i); });
+  const auto flips = ES::internal::lawson_flips(tr, scan.first, ES::CGAL_PERTURBATION);
+  REQUIRE(flips.compactions > 0);
+  REQUIRE(tr.is_valid());
+  for(auto c : tr.all_cell_handles()) REQUIRE(c->tds_data().is_clear());
+  std::set<std::array<Point, 3>> left, failing;
+  for(const auto& [c, i] : flips.left) REQUIRE(left.insert(facet_points(c, i)).second); // each once
+  for(const auto& f : tr.finite_facets())
+    if(!tr.is_infinite(f.first->neighbor(f.second)) && !ES::is_locally_delaunay(tr, f.first, f.second))
+      failing.insert(facet_points(f.first, f.second));
+  REQUIRE(left == failing);
+  REQUIRE_FALSE(left.empty());
+}
+
 TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")
 {
   // Up to issue 9 a cycle without a swap ended the run even when it had set

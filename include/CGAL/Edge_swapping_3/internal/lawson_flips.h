@@ -34,6 +34,7 @@ struct Lawson_flips_result
 {
   std::array<std::size_t, number_of_flip_kinds> swaps{}; ///< indexed by `Flip_kind`
   std::size_t visits = 0;                                ///< facets tested
+  std::size_t compactions = 0;                           ///< times the list of cells set aside was cut
   /// The interior facets not locally Delaunay at the end, each once.
   std::vector<std::pair<typename Tr::Cell_handle, int>> left;
 };
@@ -75,6 +76,7 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
     aside.resize(kept);
     for(Cell_handle c : aside) c->tds_data().mark_on_boundary();
     compact_at = (std::max)(compact_at, 2 * kept);
+    ++result.compactions;
   };
   std::array<Cell_handle, 3> made;
   bool progress = false;
