@@ -4,10 +4,11 @@
 // their data) stay; every cell is new.
 //
 // The rebuild is the paper's own flip insertion (`delaunay_by_insertion`,
-// which Joe 1991 proves ends on Delaunay; with CGAL's perturbation it gives
-// CGAL's cells) into a second triangulation, whose cells are then moved into
-// `tr` onto its own vertices. Only the old vertices and the new triangulation
-// are held at once. Should an insertion leave a facet stuck (never observed),
+// which ends on Delaunay by Joe's 1991 theorem; with CGAL's perturbation it
+// gives CGAL's cells, as the tests check) into a second triangulation, whose cells are then moved into
+// `tr` onto its own vertices. Only the old vertices, the new triangulation and
+// arrays of a few words per vertex are held at once. Should an insertion
+// leave a facet stuck (never observed in the tests and benchmarks),
 // CGAL's `Delaunay_triangulation_3` rebuilds instead.
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_REBUILD_DELAUNAY_H
