@@ -12,6 +12,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Edge_swapping_3/edge_removal.h>
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
+#include <CGAL/Edge_swapping_3/internal/worst_cell_queue.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
@@ -20,6 +21,7 @@
 #include <functional>
 #include <map>
 #include <random>
+#include <set>
 
 using namespace test;
 
@@ -853,6 +855,69 @@ TEST_CASE("The quality driver improves the worst tetrahedra - keeps the mesh - a
       if(minmax) ES::improve_worst_tetrahedra(other, ES::Min_max_dihedral_angle_criterion(), np);
       else ES::improve_worst_tetrahedra(other, ES::Max_min_dihedral_angle_criterion(), np);
       REQUIRE(cell_set(other) == cells);
+    }
+}
+
+TEST_CASE("The worst-first queue hands out the waiting cells in the order of one heap of all, a batch at a time",
+          "[quality driver]")
+{
+  // Cells by slot with scores (few values, so ties are many); a random mix
+  // of waits, changes and visits. Every cell taken must be the least
+  // (score, slot) of the waiting cells, as a heap of all would give.
+  for(unsigned seed : {1u, 2u, 3u})
+    for(std::size_t batch : {std::size_t(1), std::size_t(7), std::size_t(64), std::size_t(100000)})
+    {
+      CAPTURE(seed, batch);
+      std::mt19937 random(seed);
+      const std::size_t slots = 500;
+      std::vector<float> score(slots);
+      std::set<std::pair<float, std::size_t>> waiting;
+      ES::internal::Worst_cell_queue queue(batch);
+      auto wait = [&](std::size_t k) {
+        if(queue.waits(k)) return;
+        score[k] = float(random() % 40) / 4.0f - 5.0f;
+        queue.add(k, score[k], slots);
+        waiting.emplace(score[k], k);
+      };
+      auto change = [&](std::size_t k) {
+        if(queue.waits(k)) waiting.erase({score[k], k});
+        queue.forget(k);
+        wait(k);
+      };
+      for(std::size_t k = 0; k < slots; ++k) wait(k);
+      std::size_t taken = 0, refills = 0;
+      for(;;)
+      {
+        if(queue.empty_heap())
+        {
+          const bool any = queue.refill([&](auto f) {
+            for(std::size_t k = 0; k < slots; ++k) f(k, [&] { return score[k]; });
+          });
+          REQUIRE(any == !waiting.empty());
+          if(!any) break;
+          ++refills;
+          continue;
+        }
+        const auto e = queue.pop();
+        if(!queue.queued_at(e.slot) || e.score != score[e.slot]) continue; // stale
+        REQUIRE(!waiting.empty());
+        REQUIRE(std::make_pair(e.score, std::size_t(e.slot)) == *waiting.begin());
+        waiting.erase(waiting.begin());
+        queue.forget(e.slot);
+        ++taken;
+        // What a change does: some cells change (new score), others wait again.
+        if(taken < 3000)
+          for(int n = int(random() % 4); n > 0; --n)
+          {
+            const std::size_t k = random() % slots;
+            if(random() % 2) change(k);
+            else wait(k);
+          }
+      }
+      REQUIRE(taken >= 3000);
+      REQUIRE(waiting.empty());
+      if(batch < slots) REQUIRE(refills > 1);
+      WARN("batch " << batch << ": " << taken << " cells taken, " << refills << " refills");
     }
 }
 

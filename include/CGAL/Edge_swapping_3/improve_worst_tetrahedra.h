@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The quality driver: hill climbing on the worst tetrahedra first. A heap
-// holds the finite cells by the criterion's measure, worst on top; the worst
+// The quality driver: hill climbing on the worst tetrahedra first. A queue
+// holds the finite cells by the criterion's measure, worst first; the worst
 // cell is taken and the operations are tried on it in a fixed order (edge
 // removal on its six edges, multi-face removal at its four facets, the flip
 // of each of its four facets, then, when asked, the smoothing of each of its
 // vertices); the first that improves the worst tetrahedron of its
 // neighbourhood is made, and the cells whose operations that changed go into
-// the heap. The run ends when the heap is empty (with smoothing, when a
+// the queue. The run ends when the queue is empty (with smoothing, when a
 // sweep over every cell moves no vertex): then no operation improves any
 // cell, and a second run makes no change (with smoothing, none but moves of
 // the vertices that used up their `maximum_moves_per_vertex`).
@@ -24,6 +24,7 @@
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/internal/compact_container_index.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
+#include <CGAL/Edge_swapping_3/internal/worst_cell_queue.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
@@ -31,11 +32,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <iterator>
 #include <limits>
-#include <queue>
-#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -57,8 +55,8 @@ enum Quality_operation : unsigned
 /// The report of `improve_worst_tetrahedra`.
 struct Quality_report
 {
-  Swap_ending ending = CONVERGED;               ///< CONVERGED (heap empty) or CYCLE_LIMIT_REACHED (operation limit)
-  std::size_t visits = 0;                       ///< cells taken from the heap that still existed
+  Swap_ending ending = CONVERGED;               ///< CONVERGED (queue empty) or CYCLE_LIMIT_REACHED (operation limit)
+  std::size_t visits = 0;                       ///< cells taken from the queue that still existed
   std::size_t stuck = 0;                        ///< of those, the cells no operation improved
   std::size_t edge_removals = 0;                ///< edges removed (in one step)
   std::size_t two_step_removals = 0;            ///< edges removed in two steps (two edges each)
@@ -80,21 +78,6 @@ struct Quality_report
 };
 
 namespace internal {
-
-/// A cell in the heap: its score (larger is better) rounded to float, and its
-/// slot. Eight bytes, for a heap that starts with every cell: the score only
-/// schedules (every decision is the criterion's own), and ties go to the
-/// smaller slot, which no address decides.
-struct Worst_cell_entry
-{
-  float score;
-  std::uint32_t slot;
-
-  bool operator<(const Worst_cell_entry& other) const // std::priority_queue keeps the largest on top
-  {
-    return score != other.score ? score > other.score : slot > other.slot;
-  }
-};
 
 /// Removes the repeated items of `items`, keeping each first occurrence in
 /// place: the order stays the order met, which no address decides.
@@ -125,7 +108,6 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   typedef typename Tr::Cell_handle Cell_handle;
-  typedef internal::Worst_cell_entry Entry;
   CGAL_precondition(tr.dimension() == 3);
   const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
@@ -154,33 +136,25 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       if(counted(c)) w = (std::min)(w, score(c));
     return larger_is_worse ? -w : w;
   };
-  // Each cell is in the heap at most once while it waits (`waiting`, by
-  // slot): a cell pushed again while it waits is skipped, not measured. An
-  // entry is taken only if its slot still waits and holds a cell of the same
-  // score: a cell made in a freed slot, or one whose vertex moved, is pushed
-  // anew (`changed`), and its older entries are passed over.
+  // Each cell waits at most once (`queue`, by slot): a cell pushed again
+  // while it waits is skipped, not measured. An entry is taken only if its
+  // slot still waits in the heap and holds a cell of the same score: a cell
+  // made in a freed slot, or one whose vertex moved, is pushed anew
+  // (`changed`), and its older entries are passed over. A batch of an eighth
+  // of the cells is in the heap at a time (`Worst_cell_queue`).
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> slots(tr.tds().cells());
-  std::vector<std::uint8_t> waiting;
-  auto waiting_at = [&](std::size_t k) -> std::uint8_t& {
-    if(k >= waiting.size()) waiting.resize((std::max)(slots.number_of_slots(), k + 1), 0);
-    return waiting[k];
-  };
-  auto entry_of = [&](Cell_handle c, double s) {
-    const std::size_t k = slots(c);
-    if(k > std::numeric_limits<std::uint32_t>::max()) throw std::length_error("Edge_swapping_3: more than 2^32 cells");
-    return Entry{float(s), std::uint32_t(k)};
-  };
-  // On a deque, the heap grows by pieces: a vector would hold its old and
-  // new arrays at once when it doubles.
-  std::priority_queue<Entry, std::deque<Entry>> heap;
+  internal::Worst_cell_queue queue((std::max)(tr.number_of_finite_cells() / 8, std::size_t(1024)));
   auto push = [&](Cell_handle c, bool changed) {
-    std::uint8_t& w = waiting_at(slots(c));
-    if(changed) w = 0;
-    if(w || !counted(c)) return;
+    const std::size_t k = slots(c);
+    if(changed) queue.forget(k);
+    if(queue.waits(k) || !counted(c)) return;
     const double s = score(c);
     if(s >= enough) return;
-    w = 1;
-    heap.push(entry_of(c, s));
+    queue.add(k, float(s), slots.number_of_slots());
+  };
+  auto each_counted_cell = [&](auto f) {
+    for(Cell_handle c : tr.finite_cell_handles())
+      if(counted(c)) f(slots(c), [&] { return float(score(c)); });
   };
   // The cells whose operations may have changed, each pushed once. With edge
   // removal alone: those sharing an edge with a new cell (the ring of that
@@ -242,23 +216,12 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
 
   Quality_report report;
   report.worst_before = worst();
-  {
-    std::deque<Entry> first;
-    for(Cell_handle c : tr.finite_cell_handles())
-    {
-      if(!counted(c)) continue;
-      const double s = score(c);
-      if(s >= enough) continue;
-      waiting_at(slots(c)) = 1;
-      first.push_back(entry_of(c, s));
-    }
-    heap = std::priority_queue<Entry, std::deque<Entry>>(std::less<Entry>(), std::move(first));
-  }
+  for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
   std::vector<Cell_handle> created;
-  // Failed removals in a fixed amount of memory, an 8-byte slot per four
+  // Failed removals in a fixed amount of memory, an 8-byte slot per eight
   // cells each (per two for two-step removal, below): a failure forgotten is
   // tried again. Smaller tables cost time (benchmarks.md, "Quality at scale").
-  const std::size_t failure_slots = tr.number_of_finite_cells() / 4;
+  const std::size_t failure_slots = tr.number_of_finite_cells() / 8;
   internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? failure_slots : 0);
   internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? failure_slots : 0);
   // Two-step removal reads the cells through the ends of the edge: its
@@ -267,14 +230,15 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   // stamps are by vertex slot: no operation creates or removes a vertex.
   // Besides the failures of single edges, each cell keeps (by slot) the time
   // at which all its edges failed: an edge whose ends are older needs no new
-  // attempt. Times are counts of changes, plus one (0: never tried); past
-  // 2^32 changes nothing more is kept.
-  internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 2 * failure_slots : 0);
+  // attempt. Times are counts of changes, plus one (0: never tried), in 32
+  // bits: past 2^32 - 2 changes no stamp moves, and nothing is remembered.
+  internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 4 * failure_slots : 0);
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
       tr.tds().vertices());
-  std::vector<std::uint64_t> stamps((operations & TWO_STEP_EDGE_REMOVAL) ? vertex_slots.number_of_slots() : 0, 0);
+  std::vector<std::uint32_t> stamps((operations & TWO_STEP_EDGE_REMOVAL) ? vertex_slots.number_of_slots() : 0, 0);
   std::vector<std::uint32_t> two_step_tried;
   std::uint64_t changes = 0;
+  const std::uint64_t last_stamp = std::numeric_limits<std::uint32_t>::max() - 1;
   auto stamp_of = [&](typename Tr::Vertex_handle v) { return stamps[vertex_slots(v)]; };
   // The vertices whose smoothing failed since their star last changed (a
   // cell around them made or removed, or a vertex of their star moved), and
@@ -293,32 +257,33 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const bool flips = (operations & FLIPS) &&
                      (operations & (EDGE_REMOVAL | MULTI_FACE_REMOVAL)) != (EDGE_REMOVAL | MULTI_FACE_REMOVAL);
   // A smoothing move requeues only the cells around the vertex, so an
-  // empty heap is checked by a sweep over every cell; the run ends when a
+  // empty queue is checked by a sweep over every cell; the run ends when a
   // sweep changes nothing.
   std::size_t moves_at_sweep = 0;
   for(;;)
   {
-    if(heap.empty())
+    if(queue.empty_heap())
     {
+      if(queue.refill(each_counted_cell)) continue;
       if(report.smoothing_moves == moves_at_sweep) break;
       moves_at_sweep = report.smoothing_moves;
       for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
+      continue;
     }
     if(report.number_of_operations() >= limit)
     {
       report.ending = CYCLE_LIMIT_REACHED;
       break;
     }
-    const Entry entry = heap.top();
-    heap.pop();
+    const internal::Worst_cell_entry entry = queue.pop();
     typename Tr::Cell* cell = slots.item(entry.slot);
-    if(cell == nullptr || !waiting[entry.slot]) continue;
+    if(cell == nullptr || !queue.queued_at(entry.slot)) continue;
     const Cell_handle c = tr.tds().cells().iterator_to(*cell);
     if(!counted(c)) continue;
     const float now = float(score(c));
     // An older entry of the slot is passed over (NaN: a degenerate cell's measure).
     if(now != entry.score && !(now != now && entry.score != entry.score)) continue;
-    waiting[entry.slot] = 0;
+    queue.forget(entry.slot);
     ++report.visits;
     created.clear();
     bool improved = false, moved = false;
@@ -366,21 +331,22 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       if(entry.slot >= two_step_tried.size())
         two_step_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
       const std::uint64_t tried = two_step_tried[entry.slot];
+      const bool stamped = changes < last_stamp;
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
         {
           const std::uint64_t stamp_i = stamp_of(c->vertex(i)), stamp_j = stamp_of(c->vertex(j));
-          if(tried > (std::max)(stamp_i, stamp_j)) continue;
+          if(stamped && tried > (std::max)(stamp_i, stamp_j)) continue;
           const auto key = internal::edge_key<Tr>(c->vertex(i), c->vertex(j));
           const std::uint64_t signature = internal::mix_bits(stamp_i) + internal::mix_bits(stamp_j);
-          if(two_step_failures.find(key, signature) != nullptr) continue;
+          if(stamped && two_step_failures.find(key, signature) != nullptr) continue;
           const auto attempt = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion,
                                                                   constraints, visitor, maximum_ring, created);
           improved = attempt.removed();
-          two_step_failures.record(key, signature, attempt, improved);
+          if(stamped) two_step_failures.record(key, signature, attempt, improved);
           if(improved) ++report.two_step_removals;
         }
-      if(!improved && changes < std::numeric_limits<std::uint32_t>::max()) two_step_tried[entry.slot] = std::uint32_t(changes + 1);
+      if(!improved && stamped) two_step_tried[entry.slot] = std::uint32_t(changes + 1);
     }
     if(operations & SMOOTHING)
       for(int i = 0; i < 4 && !improved; ++i)
@@ -402,10 +368,10 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(improved)
     {
       ++changes;
-      if(!stamps.empty())
+      if(!stamps.empty() && changes <= last_stamp)
         for(Cell_handle n : created)
           for(int i = 0; i < 4; ++i)
-            if(!tr.is_infinite(n->vertex(i))) stamps[vertex_slots(n->vertex(i))] = changes;
+            if(!tr.is_infinite(n->vertex(i))) stamps[vertex_slots(n->vertex(i))] = std::uint32_t(changes);
       if(!settled.empty())
         for(Cell_handle n : created)
           for(int i = 0; i < 4; ++i) settled.erase(n->vertex(i));
@@ -445,7 +411,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
 ///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
 ///     times the number of cells \cgalParamNEnd
 ///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
-///     heap (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
+///     queue (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
 ///     the run ends when no operation improves any cell \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
 ///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd

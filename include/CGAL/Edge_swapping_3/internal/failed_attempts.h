@@ -14,6 +14,7 @@
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -54,13 +55,13 @@ template <class Key, class Hash, class Report>
 class Failure_cache
 {
 public:
-  /// Room for about `capacity` failures (a power of two, at least 2; 0: none, nothing is remembered).
+  /// Room for `capacity` failures (rounded up to an even number, at least 2; 0: none, nothing is remembered).
   explicit Failure_cache(std::size_t capacity)
   {
     if(capacity == 0) return;
-    std::size_t n = 2;
-    while(n < capacity) n *= 2;
-    slots_.assign(n, 0);
+    // At most 2^32 pairs (`place`), 64 GiB: more than any mesh in memory needs.
+    capacity = std::size_t((std::min)(std::uint64_t(capacity), std::uint64_t(1) << 33));
+    slots_.assign((std::max)(std::size_t(2), capacity + (capacity & 1)), 0);
   }
 
   /// A report with the outcome of the failure at `key` when the cells read then had `signature`, else null.
@@ -103,7 +104,14 @@ private:
     // The low byte holds the outcome; a fingerprint is never 0 (an empty place).
     return (mix_bits(signature ^ mix_bits(std::uint64_t(Hash()(key)))) & ~std::uint64_t(0xFF)) | 0x100;
   }
-  std::size_t place(std::uint64_t f) const { return std::size_t(mix_bits(f) & (slots_.size() - 1)); }
+  // The even slot of the fingerprint's pair: the high half of the product of
+  // a 32-bit hash and the number of pairs spreads over any number of pairs,
+  // so the table is the size asked for, not the next power of two.
+  std::size_t place(std::uint64_t f) const
+  {
+    const std::uint64_t pairs = slots_.size() / 2;
+    return 2 * std::size_t(((mix_bits(f) >> 32) * pairs) >> 32);
+  }
 
   std::vector<std::uint64_t> slots_;
   Report found_;
