@@ -11,6 +11,16 @@
 // swaps is written as a trace (order "adversarial"), which the checker
 // certifies by the state that comes back. The rule is the checker's model
 // (`Checker::decide` and `apply`), not the drivers'.
+//
+// With `reduce`, orders that differ only by two neighbouring visits that
+// commute are searched once (a partial-order reduction): after visiting h
+// from state s, a facet f listed before h is not visited next if h then f and
+// f then h, from s, end in the same cells and tags with the same swaps and
+// the same new tags. Any order can be rewritten into one the reduced search
+// makes, by exchanging such pairs (each exchange puts an earlier-listed facet
+// first, so the rewriting ends), with the same end, swaps and activity: the
+// ends of a cycle and their fewest swaps are the same, only the order kept
+// for each end may differ.
 
 #ifndef EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
 #define EDGE_SWAPPING_3_TEST_ADVERSARIAL_SEARCH_H
@@ -50,15 +60,44 @@ struct Search_limit_reached
 struct Cycle_search
 {
   std::size_t max_nodes;
+  bool reduce = false;
   std::size_t nodes = 0;
-  std::set<std::tuple<std::set<Cell>, std::set<Cell>, std::vector<Facet>, bool>> seen;
+  std::set<std::tuple<std::set<Cell>, std::set<Cell>, std::vector<Facet>, bool, std::vector<Facet>>> seen;
   std::map<std::pair<State, bool>, std::pair<std::size_t, std::vector<Facet>>> ends; // -> swaps, order
   bool can_end = false;               // some order makes this cycle end the run
   bool can_end_off_delaunay = false;  // ... on a triangulation that is not Delaunay
 
-  void run(const Checker& m, std::vector<Facet> left, bool busy, std::size_t swaps, std::vector<Facet>& order)
+  struct Step
   {
-    if(!seen.insert({m.cells(), m.tags(), left, busy}).second) return;
+    bool swap = false, changed = false;
+  };
+
+  // One visit of `f` on `m`: passed if `f` is not there.
+  static Step visit(Checker& m, const Facet& f)
+  {
+    if(!m.has_interior_facet(f)) return {};
+    const auto [d, e] = m.apexes(f);
+    const Checker::Decision r = m.decide(f, d, e);
+    m.apply(r);
+    // A cycle that only tags ends the run when the reading ends on a cycle without swaps.
+    return {r.swap, r.swap || (!r.new_tags.empty() && !m.ends_without_swap())};
+  }
+
+  // Whether visiting f and g from `m`, in either order, ends the same.
+  static bool commute(const Checker& m, const Facet& f, const Facet& g)
+  {
+    Checker a = m, b = m;
+    const Step a1 = visit(a, f), a2 = visit(a, g);
+    const Step b1 = visit(b, g), b2 = visit(b, f);
+    return int(a1.swap) + int(a2.swap) == int(b1.swap) + int(b2.swap) &&
+           (a1.changed || a2.changed) == (b1.changed || b2.changed) && a.cells() == b.cells() && a.tags() == b.tags();
+  }
+
+  // `not_next`: the facets the reduction keeps from being visited next.
+  void run(const Checker& m, std::vector<Facet> left, bool busy, std::size_t swaps, std::vector<Facet>& order,
+           const std::vector<Facet>& not_next = {})
+  {
+    if(!seen.insert({m.cells(), m.tags(), left, busy, not_next}).second) return;
     if(++nodes > max_nodes) throw Search_limit_reached();
     if(left.empty())
     {
@@ -74,22 +113,19 @@ struct Cycle_search
     }
     for(std::size_t k = 0; k < left.size(); ++k)
     {
+      const Facet f = left[k];
+      if(std::find(not_next.begin(), not_next.end(), f) != not_next.end()) continue;
       std::vector<Facet> rest = left;
       rest.erase(rest.begin() + std::ptrdiff_t(k));
-      const Facet f = left[k];
+      // The facets listed before f (in `left`, the listed order) that commute with it here.
+      std::vector<Facet> after_f;
+      if(reduce)
+        for(std::size_t j = 0; j < k; ++j)
+          if(commute(m, left[j], f)) after_f.push_back(left[j]);
       order.push_back(f);
-      if(!m.has_interior_facet(f))
-        run(m, rest, busy, swaps, order); // passed: it is not there at its turn
-      else
-      {
-        Checker next = m;
-        const auto [d, e] = next.apexes(f);
-        const Checker::Decision r = next.decide(f, d, e);
-        next.apply(r);
-        // A cycle that only tags ends the run when the reading ends on a cycle without swaps.
-        const bool changed = r.swap || (!r.new_tags.empty() && !m.ends_without_swap());
-        run(next, rest, busy || changed, swaps + r.swap, order);
-      }
+      Checker next = m;
+      const Step step = visit(next, f); // passed if f is not there at its turn
+      run(next, rest, busy || step.changed, swaps + step.swap, order, after_f);
       order.pop_back();
     }
   }
@@ -158,7 +194,7 @@ struct Loop_found
 
 /// The search from the start of `header` (a trace header with its cells),
 /// within `max_states` states at cycles' ends.
-inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
+inline Loop_found search(const nlohmann::json& header, std::size_t max_states, bool reduce = false)
 {
   Loop_found result;
   std::vector<Checker> models;
@@ -178,7 +214,7 @@ inline Loop_found search(const nlohmann::json& header, std::size_t max_states)
     {
       Checker m = models[s];
       m.start_round();
-      Cycle_search cycle{max_states * 64};
+      Cycle_search cycle{max_states * 64, reduce};
       std::vector<Facet> order;
       cycle.run(m, m.interior_facets(), false, 0, order);
       can_end.resize(models.size());
