@@ -5,7 +5,7 @@
 // (a listed facet that does not exist at its turn is passed). Is there a
 // choice of orders under which the helper strategy never ends?
 //
-//   experiment_adversarial_orders [--no-reduction] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders [--reduce] SOURCE READING MAX_STATES [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
 // experiment_priority_loops); READING a reading of Algorithm 4 whose made
@@ -16,10 +16,10 @@
 // the answer (a loop exists or not) is exact. Every loop found is confirmed
 // by the independent checker, which certifies it by the state that comes
 // back; with TRACE the trace of the loop with the fewest swaps over all
-// starts is saved there. The search skips orders that differ from one it
-// makes only by neighbouring visits that commute (a partial-order reduction,
-// described in adversarial_search.h; the answers are the same, the orders
-// kept may differ); --no-reduction searches every order.
+// starts is saved there. With --reduce the search skips orders that differ
+// from one it makes only by neighbouring visits that commute (a partial-order
+// reduction, described in adversarial_search.h: the answers are the same,
+// the orders kept may differ; at 7 points it is slower than the full search).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -39,15 +39,15 @@ using adversarial_search::Loop_found;
 
 int main(int argc, char** argv)
 {
-  const bool reduce = !(argc > 1 && std::string(argv[1]) == "--no-reduction");
-  if(!reduce)
+  const bool reduce = argc > 1 && std::string(argv[1]) == "--reduce";
+  if(reduce)
   {
     --argc;
     ++argv;
   }
   if(argc != 4 && argc != 5)
   {
-    std::cerr << "usage: experiment_adversarial_orders [--no-reduction] SOURCE READING MAX_STATES [TRACE]\n";
+    std::cerr << "usage: experiment_adversarial_orders [--reduce] SOURCE READING MAX_STATES [TRACE]\n";
     return 2;
   }
   const std::string source = argv[1];

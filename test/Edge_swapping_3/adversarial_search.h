@@ -27,13 +27,17 @@
 
 #include "trace_checker.h"
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <queue>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace adversarial_search {
@@ -55,79 +59,235 @@ struct Search_limit_reached
 {
 };
 
-// Every end of one cycle from `start` (a model at a cycle's end): the state,
-// whether the cycle was idle, its swaps and one order that reaches it.
-struct Cycle_search
+/// A set of the cells (4-subsets) or facets (3-subsets) of at most 9 points, by number.
+struct Mask
 {
-  std::size_t max_nodes;
-  bool reduce = false;
-  std::size_t nodes = 0;
-  std::set<std::tuple<std::set<Cell>, std::set<Cell>, std::vector<Facet>, bool, std::vector<Facet>>> seen;
-  std::map<std::pair<State, bool>, std::pair<std::size_t, std::vector<Facet>>> ends; // -> swaps, order
-  bool can_end = false;               // some order makes this cycle end the run
-  bool can_end_off_delaunay = false;  // ... on a triangulation that is not Delaunay
+  std::uint64_t w[2] = {0, 0};
 
-  struct Step
+  void set(int k) { w[k >> 6] |= std::uint64_t(1) << (k & 63); }
+  void reset(int k) { w[k >> 6] &= ~(std::uint64_t(1) << (k & 63)); }
+  bool test(int k) const { return (w[k >> 6] >> (k & 63)) & 1; }
+  bool empty() const { return w[0] == 0 && w[1] == 0; }
+  Mask minus(const Mask& o) const { return Mask{{w[0] & ~o.w[0], w[1] & ~o.w[1]}}; }
+  Mask intersection(const Mask& o) const { return Mask{{w[0] & o.w[0], w[1] & o.w[1]}}; }
+  bool operator==(const Mask& o) const { return w[0] == o.w[0] && w[1] == o.w[1]; }
+  bool operator<(const Mask& o) const { return w[1] != o.w[1] ? w[1] < o.w[1] : w[0] < o.w[0]; }
+  std::uint64_t hash() const { return w[0] * 0x9E3779B97F4A7C15ull ^ (w[1] + 0x632BE59BD9B4E019ull) * 0xBF58476D1CE4E5B9ull; }
+
+  /// Calls `f(k)` for each member, in increasing order.
+  template <class F>
+  void for_each(F f) const
   {
+    for(int i = 0; i < 2; ++i)
+      for(std::uint64_t b = w[i]; b != 0; b &= b - 1) f(64 * i + __builtin_ctzll(b));
+  }
+};
+
+/// The cells and facets of the points, numbered in lexicographic order (so a
+/// facet's number orders facets as the listing does), and the visits met so
+/// far: each is computed once on the checker's model, then read from here.
+class Space
+{
+public:
+  explicit Space(const Checker& start) : model_(start)
+  {
+    const std::size_t n = start.points().size();
+    if(n > 9) throw std::invalid_argument("adversarial search: at most 9 points (cells numbered in 128 bits)");
+    for(std::size_t a = 0; a < n; ++a)
+      for(std::size_t b = a + 1; b < n; ++b)
+        for(std::size_t c = b + 1; c < n; ++c)
+        {
+          facet_number_[Facet{a, b, c}] = int(facets_.size());
+          facets_.push_back(Facet{a, b, c});
+          for(std::size_t d = c + 1; d < n; ++d)
+          {
+            cell_number_[Cell{a, b, c, d}] = int(cells_.size());
+            cells_.push_back(Cell{a, b, c, d});
+          }
+        }
+  }
+
+  Mask cell_mask(const std::set<Cell>& cells) const
+  {
+    Mask m;
+    for(const Cell& t : cells) m.set(cell_number_.at(t));
+    return m;
+  }
+  std::set<Cell> cell_set(const Mask& m) const
+  {
+    std::set<Cell> out;
+    m.for_each([&](int k) { out.insert(cells_[std::size_t(k)]); });
+    return out;
+  }
+  const Facet& facet(int k) const { return facets_[std::size_t(k)]; }
+
+  /// The model at a state of cells and tags.
+  const Checker& model(const Mask& cells, const Mask& tags)
+  {
+    model_.set_state(cell_set(cells), cell_set(tags));
+    return model_;
+  }
+
+  /// The state after `start_round()` (tags cleared or not), and the interior facets then.
+  std::pair<Mask, Mask> round_start(const Mask& cells, const Mask& tags, Mask& listed)
+  {
+    model(cells, tags);
+    model_.start_round();
+    listed = Mask();
+    for(const Facet& f : model_.interior_facets()) listed.set(facet_number_.at(f));
+    return {cells, cell_mask(model_.tags())};
+  }
+
+  bool is_delaunay(const Mask& cells)
+  {
+    model(cells, Mask());
+    return model_.is_delaunay();
+  }
+
+  struct Visit
+  {
+    Mask cells, tags;
     bool swap = false, changed = false;
   };
 
-  // One visit of `f` on `m`: passed if `f` is not there.
-  static Step visit(Checker& m, const Facet& f)
+  /// One visit of facet number `f` at a state: passed if the facet is not there.
+  Visit visit(const Mask& cells, const Mask& tags, int f)
   {
-    if(!m.has_interior_facet(f)) return {};
-    const auto [d, e] = m.apexes(f);
-    const Checker::Decision r = m.decide(f, d, e);
-    m.apply(r);
-    // A cycle that only tags ends the run when the reading ends on a cycle without swaps.
-    return {r.swap, r.swap || (!r.new_tags.empty() && !m.ends_without_swap())};
+    const Key key{cells, tags, f};
+    const auto it = visits_.find(key);
+    if(it != visits_.end()) return it->second;
+    Visit v{cells, tags};
+    model(cells, tags);
+    if(model_.has_interior_facet(facets_[std::size_t(f)]))
+    {
+      const auto [d, e] = model_.apexes(facets_[std::size_t(f)]);
+      const Checker::Decision r = model_.decide(facets_[std::size_t(f)], d, e);
+      model_.apply(r);
+      v.cells = cell_mask(model_.cells());
+      v.tags = cell_mask(model_.tags());
+      v.swap = r.swap;
+      // A cycle that only tags ends the run when the reading ends on a cycle without swaps.
+      v.changed = r.swap || (!r.new_tags.empty() && !model_.ends_without_swap());
+    }
+    visits_.emplace(key, v);
+    return v;
   }
 
-  // Whether visiting f and g from `m`, in either order, ends the same.
-  static bool commute(const Checker& m, const Facet& f, const Facet& g)
+  /// Whether visiting f and g from a state, in either order, ends the same.
+  bool commute(const Mask& cells, const Mask& tags, int f, int g)
   {
-    Checker a = m, b = m;
-    const Step a1 = visit(a, f), a2 = visit(a, g);
-    const Step b1 = visit(b, g), b2 = visit(b, f);
+    const Visit a1 = visit(cells, tags, f), a2 = visit(a1.cells, a1.tags, g);
+    const Visit b1 = visit(cells, tags, g), b2 = visit(b1.cells, b1.tags, f);
     return int(a1.swap) + int(a2.swap) == int(b1.swap) + int(b2.swap) &&
-           (a1.changed || a2.changed) == (b1.changed || b2.changed) && a.cells() == b.cells() && a.tags() == b.tags();
+           (a1.changed || a2.changed) == (b1.changed || b2.changed) && a2.cells == b2.cells && a2.tags == b2.tags;
   }
 
-  // `not_next`: the facets the reduction keeps from being visited next.
-  void run(const Checker& m, std::vector<Facet> left, bool busy, std::size_t swaps, std::vector<Facet>& order,
-           const std::vector<Facet>& not_next = {})
+private:
+  struct Key
   {
-    if(!seen.insert({m.cells(), m.tags(), left, busy, not_next}).second) return;
+    Mask cells, tags;
+    int facet;
+    bool operator==(const Key& o) const { return cells == o.cells && tags == o.tags && facet == o.facet; }
+  };
+  struct Key_hash
+  {
+    std::size_t operator()(const Key& k) const
+    {
+      return std::size_t(k.cells.hash() ^ (k.tags.hash() * 31) ^ (std::uint64_t(k.facet) * 0x94D049BB133111EBull));
+    }
+  };
+
+  Checker model_;
+  std::vector<Cell> cells_;
+  std::vector<Facet> facets_;
+  std::map<Cell, int> cell_number_;
+  std::map<Facet, int> facet_number_;
+  std::unordered_map<Key, Visit, Key_hash> visits_;
+};
+
+// Every end of one cycle from a state at a cycle's start: the state, whether
+// the cycle was busy, its fewest swaps and one order that reaches it with
+// them (the first met with them, depth first in the listed order). A node
+// (state, facets left, busy) met again is searched again only for what is
+// new: with fewer swaps than before (all of it), or with facets allowed next
+// that the reduction kept back before (those).
+struct Cycle_search
+{
+  Space& space;
+  std::size_t max_nodes;
+  bool reduce = false;
+  std::size_t nodes = 0;
+  struct Node
+  {
+    Mask cells, tags, left;
+    bool busy;
+    bool operator==(const Node& o) const
+    {
+      return cells == o.cells && tags == o.tags && left == o.left && busy == o.busy;
+    }
+  };
+  struct Node_hash
+  {
+    std::size_t operator()(const Node& n) const
+    {
+      return std::size_t(n.cells.hash() ^ (n.tags.hash() * 31) ^ (n.left.hash() * 961) ^ std::uint64_t(n.busy));
+    }
+  };
+  struct Searched
+  {
+    std::size_t swaps;  // the fewest swaps it was met with
+    Mask not_searched;  // the facets left not searched next from it
+  };
+  std::unordered_map<Node, Searched, Node_hash> seen;
+  std::map<std::tuple<Mask, Mask, bool>, std::pair<std::size_t, std::vector<int>>> ends; // -> swaps, order
+  bool can_end = false;               // some order makes this cycle end the run
+  bool can_end_off_delaunay = false;  // ... on a triangulation that is not Delaunay
+
+  // `left`: the listed facets not visited yet; `not_next`: those the
+  // reduction keeps from being visited next.
+  void run(const Mask& cells, const Mask& tags, const Mask& left, bool busy, std::size_t swaps, std::vector<int>& order,
+           const Mask& not_next)
+  {
+    Mask next = left.minus(not_next);
+    const auto [it, added] = seen.try_emplace(Node{cells, tags, left, busy}, Searched{swaps, not_next});
+    if(!added)
+    {
+      Searched& before = it->second;
+      if(swaps < before.swaps) before.swaps = swaps;
+      else
+      {
+        next = before.not_searched.minus(not_next);
+        if(next.empty()) return;
+      }
+      before.not_searched = before.not_searched.intersection(not_next);
+    }
     if(++nodes > max_nodes) throw Search_limit_reached();
     if(left.empty())
     {
       if(!busy)
       {
         can_end = true;
-        can_end_off_delaunay = can_end_off_delaunay || !m.is_delaunay();
+        can_end_off_delaunay = can_end_off_delaunay || !space.is_delaunay(cells);
       }
-      const auto key = std::make_pair(State(m.cells(), m.tags()), busy);
-      auto it = ends.find(key);
-      if(it == ends.end() || it->second.first > swaps) ends[key] = {swaps, order};
+      const auto key = std::make_tuple(cells, tags, busy);
+      auto end = ends.find(key);
+      if(end == ends.end() || end->second.first > swaps) ends[key] = {swaps, order};
       return;
     }
-    for(std::size_t k = 0; k < left.size(); ++k)
-    {
-      const Facet f = left[k];
-      if(std::find(not_next.begin(), not_next.end(), f) != not_next.end()) continue;
-      std::vector<Facet> rest = left;
-      rest.erase(rest.begin() + std::ptrdiff_t(k));
-      // The facets listed before f (in `left`, the listed order) that commute with it here.
-      std::vector<Facet> after_f;
+    next.for_each([&](int f) {
+      Mask rest = left;
+      rest.reset(f);
+      // The facets listed before f that commute with it here.
+      Mask after_f;
       if(reduce)
-        for(std::size_t j = 0; j < k; ++j)
-          if(commute(m, left[j], f)) after_f.push_back(left[j]);
+        left.for_each([&](int g) {
+          if(g < f && space.commute(cells, tags, g, f)) after_f.set(g);
+        });
+      const Space::Visit v = space.visit(cells, tags, f); // passed if f is not there at its turn
       order.push_back(f);
-      Checker next = m;
-      const Step step = visit(next, f); // passed if f is not there at its turn
-      run(next, rest, busy || step.changed, swaps + step.swap, order, after_f);
+      run(v.cells, v.tags, rest, busy || v.changed, swaps + v.swap, order, after_f);
       order.pop_back();
-    }
+    });
   }
 };
 
@@ -188,6 +348,7 @@ struct Loop_found
   /// cycle, end it with probability one), and whether some end is not Delaunay.
   bool ends_with_probability_one = false, can_end_off_delaunay = false;
   std::size_t states = 0;
+  std::size_t nodes = 0; // the nodes (state, facets left) the cycles' searches visited
   std::size_t loop_swaps = 0, loop_cycles = 0;
   std::string trace;
 };
@@ -197,14 +358,18 @@ struct Loop_found
 inline Loop_found search(const nlohmann::json& header, std::size_t max_states, bool reduce = false)
 {
   Loop_found result;
-  std::vector<Checker> models;
+  Space space{Checker(header)};
+  std::vector<std::pair<Mask, Mask>> models; // the states at cycles' ends, by number
   std::map<State, std::size_t> index;
   std::vector<std::vector<Transition>> out;
   std::vector<std::size_t> parent;
   std::vector<std::vector<Facet>> parent_order;
   std::vector<char> can_end;
-  models.emplace_back(header);
-  index[{models[0].cells(), models[0].tags()}] = 0;
+  {
+    const Checker start(header);
+    models.emplace_back(space.cell_mask(start.cells()), space.cell_mask(start.tags()));
+    index[{start.cells(), start.tags()}] = 0;
+  }
   out.emplace_back();
   parent.push_back(0);
   parent_order.emplace_back();
@@ -212,30 +377,31 @@ inline Loop_found search(const nlohmann::json& header, std::size_t max_states, b
   {
     for(std::size_t s = 0; s < models.size(); ++s)
     {
-      Checker m = models[s];
-      m.start_round();
-      Cycle_search cycle{max_states * 64, reduce};
-      std::vector<Facet> order;
-      cycle.run(m, m.interior_facets(), false, 0, order);
+      Mask listed;
+      const auto [cells, tags] = space.round_start(models[s].first, models[s].second, listed);
+      Cycle_search cycle{space, max_states * 64, reduce};
+      std::vector<int> order;
+      cycle.run(cells, tags, listed, false, 0, order, Mask());
+      result.nodes += cycle.nodes;
       can_end.resize(models.size());
       can_end[s] = cycle.can_end;
       result.can_end_off_delaunay = result.can_end_off_delaunay || cycle.can_end_off_delaunay;
+      // The ends in the order of their cells and tags as sets, as the states are numbered.
+      std::map<std::pair<State, bool>, std::pair<std::size_t, std::vector<Facet>>> ends;
       for(const auto& [key, found] : cycle.ends)
+      {
+        std::vector<Facet> facets;
+        for(int f : found.second) facets.push_back(space.facet(f));
+        ends[{State(space.cell_set(std::get<0>(key)), space.cell_set(std::get<1>(key))), std::get<2>(key)}] = {
+            found.first, facets};
+      }
+      for(const auto& [key, found] : ends)
       {
         if(!key.second) continue; // an idle cycle: the run ends
         auto [it, added] = index.emplace(key.first, models.size());
         if(added)
         {
-          // The model at that state: the start's replayed along the orders.
-          Checker n = models[s];
-          n.start_round();
-          for(const Facet& f : found.second)
-            if(n.has_interior_facet(f))
-            {
-              const auto [d, e] = n.apexes(f);
-              n.apply(n.decide(f, d, e));
-            }
-          models.push_back(n);
+          models.emplace_back(space.cell_mask(key.first.first), space.cell_mask(key.first.second));
           out.emplace_back();
           parent.push_back(s);
           parent_order.push_back(found.second);

@@ -1088,6 +1088,65 @@ TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[
     }
 }
 
+TEST_CASE("Adversarial orders: the partial-order reduction reaches the same states, loops and answers as the full search",
+          "[conjectures][traces]")
+{
+  auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
+                      const ES::Helper_reading& reading) {
+    nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
+                     {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000},
+                     {"reading", ES::helper_reading_name(reading)}};
+    for(const Point& p : points) h["points"].push_back({p.x(), p.y(), p.z()});
+    for(const auto& c : cells) h["cells"].push_back({c[0], c[1], c[2], c[3]});
+    return h;
+  };
+  // Six points, sets 1 to 4, every next-cycle reading; seven points, set 1,
+  // the package's reading, the first 6 starts.
+  std::size_t compared = 0, loops = 0, full_nodes = 0, reduced_nodes = 0;
+  for(const auto& [n, sets] : {std::pair<std::size_t, unsigned>{6, 4}, {7, 1}})
+    for(unsigned set = 1; set <= sets; ++set)
+    {
+      const auto points = ES::point_families::random_integer<Point>(n, set);
+      auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
+      if(n == 7) starts.resize((std::min)(starts.size(), std::size_t(6)));
+      for(const auto& reading : ES::all_helper_readings())
+      {
+        if(reading.made_facets != ES::MADE_FACETS_NEXT_CYCLE || (n == 7 && ES::helper_reading_name(reading) != ES::helper_reading_name(ES::Helper_reading())))
+          continue;
+        for(const auto& cells : starts)
+        {
+          INFO(n << " points, set " << set << ", " << ES::helper_reading_name(reading));
+          const auto h = header_of(points, cells, reading);
+          const auto full = adversarial_search::search(h, 20000, false);
+          const auto reduced = adversarial_search::search(h, 20000, true);
+          REQUIRE(full.settled);
+          REQUIRE(reduced.settled);
+          REQUIRE(reduced.states == full.states);
+          REQUIRE(reduced.loop == full.loop);
+          REQUIRE(reduced.loop_swaps == full.loop_swaps);
+          REQUIRE(reduced.loop_cycles == full.loop_cycles);
+          REQUIRE(reduced.ends_with_probability_one == full.ends_with_probability_one);
+          REQUIRE(reduced.can_end_off_delaunay == full.can_end_off_delaunay);
+          full_nodes += full.nodes;
+          reduced_nodes += reduced.nodes;
+          if(reduced.loop)
+          {
+            const auto check = check_text(reduced.trace);
+            INFO(check.error);
+            REQUIRE(check.ok);
+            REQUIRE(check.loop_certified);
+            ++loops;
+          }
+          ++compared;
+        }
+      }
+    }
+  REQUIRE(compared == 4 * 6 * 18 + 6); // 6 starts (TOPCOM) in each 6-point set
+  REQUIRE(loops > 0);
+  WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << full_nodes
+                << " in full, " << reduced_nodes << " reduced");
+}
+
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
           "[conjectures][traces]")
 {

@@ -716,6 +716,15 @@ public:
   }
 
   bool has_interior_facet(const Facet& f) const { return is_interior(f); }
+  /// Puts the model in the state of `cells` with `tags`, for a program that
+  /// searches states (the facets follow the cells; counters are kept).
+  void set_state(const std::set<Cell>& cells, const std::set<Cell>& tags)
+  {
+    cells_.clear();
+    facets_.clear();
+    for(const Cell& t : cells) add_cell(t);
+    tags_ = tags;
+  }
   const std::set<Cell>& cells() const { return cells_; }
   const std::set<Cell>& tags() const { return tags_; }
   const std::vector<Point>& points() const { return points_; }
