@@ -1088,18 +1088,26 @@ TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[
     }
 }
 
+namespace {
+
+// The header of an adversarial search's trace from a start.
+nlohmann::json adversarial_header(const std::vector<Point>& points,
+                                  const std::vector<std::array<std::size_t, 4>>& cells,
+                                  const ES::Helper_reading& reading)
+{
+  nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
+                   {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000},
+                   {"reading", ES::helper_reading_name(reading)}};
+  for(const Point& p : points) h["points"].push_back({p.x(), p.y(), p.z()});
+  for(const auto& c : cells) h["cells"].push_back({c[0], c[1], c[2], c[3]});
+  return h;
+}
+
+} // namespace
+
 TEST_CASE("Adversarial orders: the partial-order reduction reaches the same states, loops and answers as the full search",
           "[conjectures][traces]")
 {
-  auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
-                      const ES::Helper_reading& reading) {
-    nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
-                     {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000},
-                     {"reading", ES::helper_reading_name(reading)}};
-    for(const Point& p : points) h["points"].push_back({p.x(), p.y(), p.z()});
-    for(const auto& c : cells) h["cells"].push_back({c[0], c[1], c[2], c[3]});
-    return h;
-  };
   // Six points, sets 1 to 4, every next-cycle reading; seven points, set 1,
   // the package's reading, the first 6 starts.
   std::size_t compared = 0, loops = 0, full_nodes = 0, reduced_nodes = 0;
@@ -1116,7 +1124,7 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
         for(const auto& cells : starts)
         {
           INFO(n << " points, set " << set << ", " << ES::helper_reading_name(reading));
-          const auto h = header_of(points, cells, reading);
+          const auto h = adversarial_header(points, cells, reading);
           const auto full = adversarial_search::search(h, 20000, false);
           const auto reduced = adversarial_search::search(h, 20000, true);
           REQUIRE(full.settled);
@@ -1150,15 +1158,6 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
           "[conjectures][traces]")
 {
-  auto header_of = [](const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
-                      const ES::Helper_reading& reading) {
-    nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
-                     {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000},
-                     {"reading", ES::helper_reading_name(reading)}};
-    for(const Point& p : points) h["points"].push_back({p.x(), p.y(), p.z()});
-    for(const auto& c : cells) h["cells"].push_back({c[0], c[1], c[2], c[3]});
-    return h;
-  };
   // Five points: every order of every cycle, from every start, under the 18
   // readings whose made facets wait for the next cycle: the search ends, and
   // no order loops.
@@ -1171,7 +1170,7 @@ TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a cer
       if(reading.made_facets == ES::MADE_FACETS_NEXT_CYCLE)
         for(const auto& cells : starts)
         {
-          const auto r = adversarial_search::search(header_of(points, cells, reading), 10000);
+          const auto r = adversarial_search::search(adversarial_header(points, cells, reading), 10000);
           INFO("set " << set << ", " << ES::helper_reading_name(reading));
           REQUIRE(r.settled);
           REQUIRE_FALSE(r.loop);
@@ -1191,7 +1190,7 @@ TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a cer
   std::string first_shortest;
   for(const auto& cells : starts)
   {
-    const auto r = adversarial_search::search(header_of(points, cells, ES::Helper_reading()), 10000);
+    const auto r = adversarial_search::search(adversarial_header(points, cells, ES::Helper_reading()), 10000);
     REQUIRE(r.settled);
     // An adversary may loop, but from every state it reaches the run can still
     // end: random orders end it with probability one, on CGAL's triangulation.
