@@ -2,14 +2,16 @@
 // Experiment (not a test): the adversarial order class. From every fine
 // triangulation (TOPCOM) of a small point set, an adversary chooses, in every
 // cycle, the order in which the facets listed at the cycle's start are visited
-// (a listed facet that does not exist at its turn is passed). Is there a
-// choice of orders under which the helper strategy never ends?
+// (a listed facet that does not exist at its turn is passed; with same-cycle
+// readings, the order of the cycle's sweep through all vertex triples). Is
+// there a choice of orders under which the helper strategy never ends?
 //
 //   experiment_adversarial_orders [--reduce] SOURCE READING MAX_STATES [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
-// experiment_priority_loops); READING a reading of Algorithm 4 whose made
-// facets wait for the next cycle, or "all" for the 18 such readings.
+// experiment_priority_loops); READING a reading of Algorithm 4, or "next-cycle"
+// or "same-cycle" for the 18 readings with that visit of made facets, or
+// "all" for the 36.
 //
 // The search is test/Edge_swapping_3/adversarial_search.h. A start is
 // "settled" when its whole graph was searched within MAX_STATES states: then
@@ -66,18 +68,19 @@ int main(int argc, char** argv)
     return 2;
   }
   std::vector<ES::Helper_reading> readings;
-  if(std::string(argv[2]) == "all")
+  const std::string which = argv[2];
+  if(which == "all" || which == "next-cycle" || which == "same-cycle")
   {
     for(const auto& r : ES::all_helper_readings())
-      if(r.made_facets == ES::MADE_FACETS_NEXT_CYCLE) readings.push_back(r);
+      if(which == "all" || (r.made_facets == ES::MADE_FACETS_NEXT_CYCLE) == (which == "next-cycle"))
+        readings.push_back(r);
   }
   else
   {
     readings.emplace_back();
-    if(!ES::helper_reading_from_name(argv[2], readings.back()) ||
-       readings.back().made_facets != ES::MADE_FACETS_NEXT_CYCLE)
+    if(!ES::helper_reading_from_name(which, readings.back()))
     {
-      std::cerr << "experiment_adversarial_orders: unknown reading, or one with same-cycle: '" << argv[2] << "'\n";
+      std::cerr << "experiment_adversarial_orders: unknown reading '" << which << "'\n";
       return 2;
     }
   }

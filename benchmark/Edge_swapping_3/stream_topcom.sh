@@ -13,6 +13,9 @@
 #   random12     random integer sets of 12 points, seeds 1-3: plain and the
 #                package's helper reading in 3 orders (6 runs each)
 #   cube_face_centres  cube with centre and face centres, 93 runs each
+#   cube_face_centres_package  the same set: plain and the package's helper
+#                reading in 3 orders (6 runs each)
+#   two_spheres_package  the two-spheres sets, seeds 1-3, 6 runs each
 #   grid332      the 3x3x2 grid: plain and the package's helper in 3 orders
 #   random12all  random integer set of 12 points, seed 1, 93 runs each
 set -euo pipefail
@@ -36,6 +39,8 @@ for step in $steps; do
     grid223) run grid223 --families grid-2x2x3 --sizes 12 --seeds 1 --readings all ;;
     two_spheres) run two_spheres --families two-spheres --sizes 12 --seeds 1-3 --readings all ;;
     cube_face_centres) run cube_face_centres --families cube-face-centres --sizes 15 --seeds 1 --readings all ;;
+    cube_face_centres_package) run cube_face_centres_package --families cube-face-centres --sizes 15 --seeds 1 ;;
+    two_spheres_package) run two_spheres_package --families two-spheres --sizes 12 --seeds 1-3 ;;
     random12) run random12 --families random-integer --sizes 12 --seeds 1-3 ;;
     grid332) run grid332 --families grid-3x3x2 --sizes 18 --seeds 1 ;;
     random12all) run random12all --families random-integer --sizes 12 --seeds 1 --readings all ;;

@@ -2,7 +2,10 @@
 // The adversarial order class, searched exactly on small point sets: an
 // adversary chooses, in every cycle, the order in which the facets listed at
 // the cycle's start are visited (a listed facet that does not exist at its
-// turn is passed). From a start triangulation, the search enumerates every
+// turn is passed). With same-cycle readings the adversary chooses the sweep:
+// an order of all vertex triples, each visited at its turn if it is an
+// interior facet then, so facets made in the cycle can be visited in it.
+// From a start triangulation, the search enumerates every
 // state (cells and tags) at a cycle's end that some sequence of orders
 // reaches, and for each every state the next cycle can end in (depth first
 // over the facets not yet visited, states already seen cut off). A cycle with
@@ -27,6 +30,7 @@
 
 #include "trace_checker.h"
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -105,6 +109,23 @@ public:
             cells_.push_back(Cell{a, b, c, d});
           }
         }
+    for(const Cell& t : cells_)
+      cell_facets_.push_back({facet_number_.at(Facet{t[1], t[2], t[3]}), facet_number_.at(Facet{t[0], t[2], t[3]}),
+                              facet_number_.at(Facet{t[0], t[1], t[3]}), facet_number_.at(Facet{t[0], t[1], t[2]})});
+  }
+
+  /// The interior facets of the cells: those in two of them.
+  Mask interior(const Mask& cells) const
+  {
+    Mask once, twice;
+    cells.for_each([&](int k) {
+      for(int f : cell_facets_[std::size_t(k)])
+      {
+        if(once.test(f)) twice.set(f);
+        once.set(f);
+      }
+    });
+    return twice;
   }
 
   Mask cell_mask(const std::set<Cell>& cells) const
@@ -128,13 +149,18 @@ public:
     return model_;
   }
 
-  /// The state after `start_round()` (tags cleared or not), and the interior facets then.
+  /// The state after `start_round()` (tags cleared or not), and the facets
+  /// the round may visit: those there at its start (next-cycle), or every
+  /// vertex triple (same-cycle: a sweep gives each triple a place).
   std::pair<Mask, Mask> round_start(const Mask& cells, const Mask& tags, Mask& listed)
   {
     model(cells, tags);
     model_.start_round();
     listed = Mask();
-    for(const Facet& f : model_.interior_facets()) listed.set(facet_number_.at(f));
+    if(model_.visits_made_facets())
+      for(int f = 0; f < int(facets_.size()); ++f) listed.set(f);
+    else
+      listed = interior(cells);
     return {cells, cell_mask(model_.tags())};
   }
 
@@ -200,6 +226,7 @@ private:
   Checker model_;
   std::vector<Cell> cells_;
   std::vector<Facet> facets_;
+  std::vector<std::array<int, 4>> cell_facets_; // by cell number
   std::map<Cell, int> cell_number_;
   std::map<Facet, int> facet_number_;
   std::unordered_map<Key, Visit, Key_hash> visits_;
@@ -208,9 +235,16 @@ private:
 // Every end of one cycle from a state at a cycle's start: the state, whether
 // the cycle was busy, its fewest swaps and one order that reaches it with
 // them (the first met with them, depth first in the listed order). A node
-// (state, facets left, busy) met again is searched again only for what is
+// (state, triples allowed, busy) met again is searched again only for what is
 // new: with fewer swaps than before (all of it), or with facets allowed next
 // that the reduction kept back before (those).
+//
+// Only facets that are there are visited. A listed triple that is not there
+// at its turn is passed; passing it at one moment it is not there or another
+// ends the same, so the search passes a triple only just before a flip makes
+// it again (or, with same-cycle, makes it new), by trying the flip's
+// children with and without each triple it makes that is still allowed, and
+// the triples still allowed and not there at the cycle's end are passed then.
 struct Cycle_search
 {
   Space& space;
@@ -219,18 +253,18 @@ struct Cycle_search
   std::size_t nodes = 0;
   struct Node
   {
-    Mask cells, tags, left;
+    Mask cells, tags, allowed;
     bool busy;
     bool operator==(const Node& o) const
     {
-      return cells == o.cells && tags == o.tags && left == o.left && busy == o.busy;
+      return cells == o.cells && tags == o.tags && allowed == o.allowed && busy == o.busy;
     }
   };
   struct Node_hash
   {
     std::size_t operator()(const Node& n) const
     {
-      return std::size_t(n.cells.hash() ^ (n.tags.hash() * 31) ^ (n.left.hash() * 961) ^ std::uint64_t(n.busy));
+      return std::size_t(n.cells.hash() ^ (n.tags.hash() * 31) ^ (n.allowed.hash() * 961) ^ std::uint64_t(n.busy));
     }
   };
   struct Searched
@@ -243,20 +277,22 @@ struct Cycle_search
   bool can_end = false;               // some order makes this cycle end the run
   bool can_end_off_delaunay = false;  // ... on a triangulation that is not Delaunay
 
-  // `left`: the listed facets not visited yet; `not_next`: those the
-  // reduction keeps from being visited next.
-  void run(const Mask& cells, const Mask& tags, const Mask& left, bool busy, std::size_t swaps, std::vector<int>& order,
-           const Mask& not_next)
+  // `allowed`: the triples not visited or passed yet; `not_next`: the facets
+  // the reduction keeps from being visited next.
+  void run(const Mask& cells, const Mask& tags, const Mask& allowed, bool busy, std::size_t swaps,
+           std::vector<int>& order, const Mask& not_next)
   {
+    const Mask present = space.interior(cells);
+    const Mask left = allowed.intersection(present); // the facets still to visit
     Mask next = left.minus(not_next);
-    const auto [it, added] = seen.try_emplace(Node{cells, tags, left, busy}, Searched{swaps, not_next});
+    const auto [it, added] = seen.try_emplace(Node{cells, tags, allowed, busy}, Searched{swaps, not_next});
     if(!added)
     {
       Searched& before = it->second;
       if(swaps < before.swaps) before.swaps = swaps;
       else
       {
-        next = before.not_searched.minus(not_next);
+        next = before.not_searched.minus(not_next).intersection(left);
         if(next.empty()) return;
       }
       before.not_searched = before.not_searched.intersection(not_next);
@@ -275,17 +311,26 @@ struct Cycle_search
       return;
     }
     next.for_each([&](int f) {
-      Mask rest = left;
+      Mask rest = allowed;
       rest.reset(f);
-      // The facets listed before f that commute with it here.
+      // The facets to visit listed before f that commute with it here.
       Mask after_f;
       if(reduce)
         left.for_each([&](int g) {
           if(g < f && space.commute(cells, tags, g, f)) after_f.set(g);
         });
-      const Space::Visit v = space.visit(cells, tags, f); // passed if f is not there at its turn
+      const Space::Visit v = space.visit(cells, tags, f);
+      // The triples the visit makes that are still allowed: each may have been passed just before.
+      std::vector<int> made;
+      space.interior(v.cells).minus(present).intersection(rest).for_each([&](int g) { made.push_back(g); });
       order.push_back(f);
-      run(v.cells, v.tags, rest, busy || v.changed, swaps + v.swap, order, after_f);
+      for(std::size_t passed = 0; passed < (std::size_t(1) << made.size()); ++passed)
+      {
+        Mask r = rest;
+        for(std::size_t k = 0; k < made.size(); ++k)
+          if((passed >> k) & 1) r.reset(made[k]);
+        run(v.cells, v.tags, r, busy || v.changed, swaps + v.swap, order, after_f);
+      }
       order.pop_back();
     });
   }

@@ -1108,8 +1108,8 @@ nlohmann::json adversarial_header(const std::vector<Point>& points,
 TEST_CASE("Adversarial orders: the partial-order reduction reaches the same states, loops and answers as the full search",
           "[conjectures][traces]")
 {
-  // Six points, sets 1 to 4, every next-cycle reading; seven points, set 1,
-  // the package's reading, the first 6 starts.
+  // Six points, sets 1 to 4, all 36 readings; seven points, set 1, the
+  // package's reading, the first 6 starts.
   std::size_t compared = 0, loops = 0, full_nodes = 0, reduced_nodes = 0;
   for(const auto& [n, sets] : {std::pair<std::size_t, unsigned>{6, 4}, {7, 1}})
     for(unsigned set = 1; set <= sets; ++set)
@@ -1119,8 +1119,7 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
       if(n == 7) starts.resize((std::min)(starts.size(), std::size_t(6)));
       for(const auto& reading : ES::all_helper_readings())
       {
-        if(reading.made_facets != ES::MADE_FACETS_NEXT_CYCLE || (n == 7 && ES::helper_reading_name(reading) != ES::helper_reading_name(ES::Helper_reading())))
-          continue;
+        if(n == 7 && ES::helper_reading_name(reading) != ES::helper_reading_name(ES::Helper_reading())) continue;
         for(const auto& cells : starts)
         {
           INFO(n << " points, set " << set << ", " << ES::helper_reading_name(reading));
@@ -1149,7 +1148,7 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
         }
       }
     }
-  REQUIRE(compared == 4 * 6 * 18 + 6); // 6 starts (TOPCOM) in each 6-point set
+  REQUIRE(compared == 4 * 6 * 36 + 6); // 6 starts (TOPCOM) in each 6-point set
   REQUIRE(loops > 0);
   WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << full_nodes
                 << " in full, " << reduced_nodes << " reduced");
@@ -1158,70 +1157,90 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
           "[conjectures][traces]")
 {
-  // Five points: every order of every cycle, from every start, under the 18
-  // readings whose made facets wait for the next cycle: the search ends, and
-  // no order loops.
+  // Five points: every order of every cycle (with same-cycle, every sweep),
+  // from every start, under all 36 readings: the search ends, and no order
+  // loops.
   std::size_t searched = 0;
   for(unsigned set = 1; set <= 10; ++set)
   {
     const auto points = ES::point_families::random_integer<Point>(5, set);
     const auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
     for(const auto& reading : ES::all_helper_readings())
-      if(reading.made_facets == ES::MADE_FACETS_NEXT_CYCLE)
-        for(const auto& cells : starts)
-        {
-          const auto r = adversarial_search::search(adversarial_header(points, cells, reading), 10000);
-          INFO("set " << set << ", " << ES::helper_reading_name(reading));
-          REQUIRE(r.settled);
-          REQUIRE_FALSE(r.loop);
-          REQUIRE(r.ends_with_probability_one);
-          REQUIRE_FALSE(r.can_end_off_delaunay);
-          ++searched;
-        }
+      for(const auto& cells : starts)
+      {
+        const auto r = adversarial_search::search(adversarial_header(points, cells, reading), 10000);
+        INFO("set " << set << ", " << ES::helper_reading_name(reading));
+        REQUIRE(r.settled);
+        REQUIRE_FALSE(r.loop);
+        REQUIRE(r.ends_with_probability_one);
+        REQUIRE_FALSE(r.can_end_off_delaunay);
+        ++searched;
+      }
   }
-  REQUIRE(searched == 20 * 18); // 20 starts in the ten sets (results/adversarial_orders.txt)
+  REQUIRE(searched == 20 * 36); // 20 starts in the ten sets (results/adversarial_orders.txt)
 
-  // Six points (set 1, the package's reading): from some starts an adversary
-  // loops with 2 swaps in 2 cycles; the kept certificate is that loop's trace.
+  // Six points (set 1, the package's reading, then with same-cycle): from
+  // some starts an adversary loops with 2 swaps, in 2 cycles, or in 1 when
+  // the facets a flip makes can be visited in its cycle; the kept
+  // certificates are those loops' traces.
   const auto points = ES::point_families::random_integer<Point>(6, 1);
   const auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
   REQUIRE(starts.size() == 6);
-  std::size_t loops = 0, fewest = 1000;
-  std::string first_shortest;
-  for(const auto& cells : starts)
+  ES::Helper_reading same_cycle;
+  same_cycle.made_facets = ES::MADE_FACETS_SAME_CYCLE;
+  for(const auto& [reading, fixture, rounds] :
+      {std::make_tuple(ES::Helper_reading(), "helper_adversarial_loop_6_points.trace.jsonl", 2),
+       std::make_tuple(same_cycle, "helper_adversarial_loop_6_points_same_cycle.trace.jsonl", 1)})
   {
-    const auto r = adversarial_search::search(adversarial_header(points, cells, ES::Helper_reading()), 10000);
-    REQUIRE(r.settled);
-    // An adversary may loop, but from every state it reaches the run can still
-    // end: random orders end it with probability one, on CGAL's triangulation.
-    REQUIRE(r.ends_with_probability_one);
-    REQUIRE_FALSE(r.can_end_off_delaunay);
-    if(!r.loop) continue;
-    ++loops;
-    const auto check = check_text(r.trace);
-    INFO(check.error);
-    REQUIRE(check.ok);
-    REQUIRE(check.loop_certified);
-    if(r.loop_swaps < fewest)
+    INFO(ES::helper_reading_name(reading));
+    std::size_t loops = 0, fewest = 1000;
+    std::string first_shortest;
+    for(const auto& cells : starts)
     {
-      fewest = r.loop_swaps;
-      first_shortest = r.trace;
+      const auto r = adversarial_search::search(adversarial_header(points, cells, reading), 10000);
+      REQUIRE(r.settled);
+      // An adversary may loop, but from every state it reaches the run can still
+      // end: random orders end it with probability one, on CGAL's triangulation.
+      REQUIRE(r.ends_with_probability_one);
+      REQUIRE_FALSE(r.can_end_off_delaunay);
+      if(!r.loop) continue;
+      ++loops;
+      const auto check = check_text(r.trace);
+      INFO(check.error);
+      REQUIRE(check.ok);
+      REQUIRE(check.loop_certified);
+      if(r.loop_swaps < fewest)
+      {
+        fewest = r.loop_swaps;
+        first_shortest = r.trace;
+      }
     }
+    REQUIRE(loops == 3);
+    REQUIRE(fewest == 2);
+    const std::string kept = test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + fixture);
+    REQUIRE(first_shortest == kept);
+    const auto r = check_text(kept);
+    REQUIRE(r.ok);
+    REQUIRE(r.loop_certified);
+    REQUIRE(r.loop_to - r.loop_from == std::size_t(rounds));
   }
-  REQUIRE(loops == 3);
-  REQUIRE(fewest == 2);
-  const std::string kept =
-    test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_adversarial_loop_6_points.trace.jsonl");
-  REQUIRE(first_shortest == kept);
-  const auto r = check_text(kept);
-  REQUIRE(r.ok);
-  REQUIRE(r.loop_certified);
-  REQUIRE(r.loop_from == 1);
-  REQUIRE(r.loop_to == 3);
-  // An adversarial trace must still visit listed facets once per round.
-  auto lines = text_lines(kept);
-  lines.insert(lines.begin() + 2, lines[1]);
-  REQUIRE_FALSE(check_text(joined(lines)).ok);
+
+  // An adversarial trace must still visit listed facets once per round ...
+  const auto lines = text_lines(
+    test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_adversarial_loop_6_points.trace.jsonl"));
+  auto twice = lines;
+  twice.insert(twice.begin() + 2, twice[1]);
+  REQUIRE_FALSE(check_text(joined(twice)).ok);
+  // ... and every listed facet that is there throughout the round: round 3
+  // visits facet (0,1,5), which sets no tag and swaps nothing, so without its
+  // line every state is the same, and the round is still not a whole cycle.
+  REQUIRE(nlohmann::json::parse(lines[12])["facet"] == nlohmann::json({0, 1, 5}));
+  REQUIRE(nlohmann::json::parse(lines[12])["new_tags"].empty());
+  auto skipped = lines;
+  skipped.erase(skipped.begin() + 12);
+  const auto r = check_text(joined(skipped));
+  REQUIRE_FALSE(r.ok);
+  REQUIRE(r.error.find("a listed facet that was there throughout") != std::string::npos);
 }
 
 TEST_CASE("The trace checker rejects altered traces, naming the line", "[conjectures][traces]")

@@ -22,7 +22,10 @@
 // the 2-2 flip on the hull and the 4-4 flip inside, found by walking around
 // the edge through the cell set, and every flip must keep the volume, exactly.
 // What it does not check: in the storage and random orders, which facet comes
-// next (it checks that each round visits listed facets at most once each).
+// next. It checks that each round visits listed facets at most once each, and
+// every listed facet that was there throughout the round (one gone at some
+// moment may have had its turn then). An adversarial order with same-cycle
+// is a sweep the adversary chooses: any vertex triple at most once a round.
 //
 // Traces of the work queue (schedule "queue", the package's reading): each
 // visit is checked as above; within a round of the fixed order the
@@ -131,8 +134,9 @@ public:
     strategy_ = header.at("strategy").get<std::string>();
     require(strategy_ == "helper" || strategy_ == "plain", "unknown strategy '" + strategy_ + "'");
     order_ = header.at("order").get<std::string>();
-    // "adversarial": any order that visits each facet listed at a round's start
-    // at most once (an order chosen by a search, experiment_adversarial_orders).
+    // "adversarial": any order chosen visit by visit (by a search,
+    // experiment_adversarial_orders): with next-cycle, each facet listed at a
+    // round's start at most once; with same-cycle, any facet at most once.
     require(order_ == "storage" || order_ == "random" || order_ == "priority" || order_ == "adversarial",
             "unknown order '" + order_ + "'");
     const std::string schedule = header.value("schedule", "");
@@ -159,7 +163,9 @@ public:
     facet_cells_ = condition == "facet-cells";
     end_without_swap_ = ending == "no-swap";
     sweep_ = made == "same-cycle";
-    require(!sweep_ || order_ == "priority" || order_ == "random", "same-cycle needs the priority or random order");
+    require(!sweep_ || order_ == "priority" || order_ == "random" || order_ == "adversarial",
+            "same-cycle needs the priority, random or adversarial order");
+    sweep_in_order_ = sweep_ && order_ != "adversarial";
     require(!queue_ || (!clear_tags_each_cycle_ && !tags_outlive_cells_ && pass_over_ && !facet_cells_ &&
                         !end_without_swap_ && !sweep_ && order_ != "adversarial"),
             "the work queue runs the package's reading, in storage, random or priority order");
@@ -385,7 +391,7 @@ private:
     queue_last_.reset();
     if(clear_tags_each_cycle_) tags_.clear();
     ++round_number_;
-    if(sweep_)
+    if(sweep_in_order_)
     {
       // A sweep (same-cycle): priority order, or in random order one drawn from the seed and the round.
       sweep_seed_ = order_ == "priority" ? seed_ : mix(seed_ + round_number_);
@@ -405,6 +411,7 @@ private:
         return priority_before({priority(a), by_points(a)}, {priority(b), by_points(b)});
       });
     listed_set_ = std::set<Facet>(listed_.begin(), listed_.end());
+    owed_ = listed_set_;
     next_ = 0;
     visited_.clear();
     round_swaps_ = 0;
@@ -425,7 +432,7 @@ private:
       }
       return;
     }
-    if(sweep_)
+    if(sweep_in_order_)
     {
       while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
       require(!ahead_.empty() && sorted_of(ahead_.front().by_points) == f, "a visit out of the sweep's order");
@@ -435,8 +442,11 @@ private:
     }
     if(order_ != "priority")
     {
-      require(listed_set_.count(f) == 1, "a facet visited that was not there when the round began");
+      // An adversarial sweep (same-cycle) may visit a facet made in the round;
+      // a vertex triple has one place in a sweep, so it is visited once.
+      require(sweep_ || listed_set_.count(f) == 1, "a facet visited that was not there when the round began");
       require(visited_.insert(f).second, "a facet visited twice in one round");
+      owed_.erase(f);
       return;
     }
     while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
@@ -692,7 +702,7 @@ public:
       oriented(t); // not flat
       add_cell(t);
     }
-    if(sweep_) add_made_facets(r.new_cells);
+    if(sweep_in_order_) add_made_facets(r.new_cells);
     ++round_swaps_;
   }
 
@@ -736,6 +746,8 @@ public:
   bool round_is_idle() const { return round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_); }
   /// Whether the reading ends the run after a round without swaps, new tags or not.
   bool ends_without_swap() const { return end_without_swap_; }
+  /// Whether facets made during a round are visited in it (same-cycle).
+  bool visits_made_facets() const { return sweep_; }
   /// Whether every interior facet is locally Delaunay (perturbed).
   bool is_delaunay() const { return all_delaunay(); }
 
@@ -785,6 +797,10 @@ private:
       ++result.swaps;
     }
     apply(r);
+    if(r.swap) // a listed facet the flip took away may have had its turn now
+      for(const Cell& t : r.old_cells)
+        for(const Facet& g : facets_of(t))
+          if(!is_interior(g)) owed_.erase(g);
     ++result.visits;
   }
 
@@ -794,11 +810,13 @@ private:
   {
     const std::size_t round = std::size_t(whole(l.at("round")));
     require(round == result.rounds + 1, "rounds out of sequence");
-    if(sweep_)
+    if(sweep_in_order_)
     {
       while(!ahead_.empty() && !is_interior(sorted_of(ahead_.front().by_points))) ahead_.erase(ahead_.begin());
       require(ahead_.empty(), "the round ended before a facet ahead in the sweep was visited");
     }
+    else if(order_ != "priority" && !queue_)
+      require(owed_.empty(), "the round ended before a listed facet that was there throughout was visited");
     else if(order_ == "priority" && !queue_)
     {
       while(next_ < listed_.size() && !is_interior(listed_[next_])) ++next_;
@@ -881,6 +899,11 @@ private:
   std::map<Facet, std::vector<Cell>> facets_;
   std::vector<Facet> listed_;
   std::set<Facet> listed_set_, visited_;
+  // Storage, random and adversarial orders: the facets listed at the round's
+  // start that were there at every moment since and are not visited yet. A
+  // listed facet that is gone at some moment may have had its turn then; one
+  // that never is must be visited before the round ends.
+  std::set<Facet> owed_;
   std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
   bool last_round_idle_ = false, ended_ = false;
   bool queue_ = false;                    // a trace of the work queue
@@ -889,6 +912,7 @@ private:
   std::optional<std::pair<std::uint64_t, std::array<std::size_t, 3>>> queue_last_; // the queue's last priority
   bool clear_tags_each_cycle_ = false, pass_over_ = true, end_without_swap_ = false;
   bool tags_outlive_cells_ = false, facet_cells_ = false, sweep_ = false;
+  bool sweep_in_order_ = false; // a sweep in the fixed or random order (not the adversary's)
   std::size_t round_number_ = 0;
   std::uint64_t sweep_seed_ = 0;
   std::vector<Place> ahead_; // a sweep: the places still ahead, in order
