@@ -6,7 +6,8 @@
 //
 //   experiment_escape_times SOURCE FIRST LAST MAX_CYCLES [THREADS [SAVE_DIR]]
 //
-// SOURCE is a case file (its points and start are used), or FAMILY:N:SET for
+// SOURCE is a case file (its points and start are used), a TetGen .node file
+// (its points, in the file's order, with a placing start), or FAMILY:N:SET for
 // the laboratory's point family FAMILY with N points drawn from SET and a
 // placing start. Runs are spread over THREADS threads (default 2); the lines
 // come in seed order. doc/Edge_swapping_3/conjectures.md plots them
@@ -17,6 +18,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include <atomic>
@@ -70,7 +72,15 @@ int main(int argc, char** argv)
   ES::Conjecture_case<K::Point_3> c;
   const std::string source = argv[1];
   const auto colon = source.find(':');
-  if(colon != std::string::npos && source.find(".json") == std::string::npos)
+  const auto ends_with = [&](const std::string& suffix) {
+    return source.size() >= suffix.size() && source.compare(source.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if(ends_with(".node"))
+  {
+    for(const auto& p : ES::IO::read_node_file(source).points) c.points.emplace_back(p[0], p[1], p[2]);
+    c.start = ES::PLACING_START;
+  }
+  else if(colon != std::string::npos && !ends_with(".json"))
   {
     const auto second = source.find(':', colon + 1);
     c.points = ES::make_point_family<K::Point_3>(source.substr(0, colon), std::stoul(source.substr(colon + 1, second - colon - 1)),
