@@ -29,7 +29,10 @@ for n in $sizes; do
     ./build/bin/experiment_adversarial_orders random-integer:$n:$set "$reading" 20000 |
       awk -v n=$n -v set=$set '/^reading/{print n, set, $0}'
   done
-done | tee /dev/stderr | awk '
+done | while IFS= read -r line; do # each line to standard error too, through its descriptor
+  printf '%s\n' "$line" >&2
+  printf '%s\n' "$line"
+done | awk '
   { n = $1; r = $4; sub(":", "", r); k = n " " r
     starts[k] += $5; settled[k] += $7; loops[k] += $9; sets[k] += ($9 > 0)
     if ($9 > 0) { f = $0; sub(/.*fewest swaps /, "", f); sub(/,.*/, "", f); if (!(k in fewest) || f + 0 < fewest[k]) fewest[k] = f + 0 }
