@@ -60,21 +60,14 @@ void save_last_state(const ES::Conjecture_case<K::Point_3>& c, const std::string
   std::ofstream(path) << j.dump() << '\n';
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+// The points and start of SOURCE (see the top of this file).
+ES::Conjecture_case<K::Point_3> read_source(const std::string& source)
 {
-  if(argc < 5 || argc > 7)
-  {
-    std::cerr << "usage: experiment_escape_times SOURCE FIRST LAST MAX_CYCLES [THREADS [SAVE_DIR]]\n";
-    return 2;
-  }
   ES::Conjecture_case<K::Point_3> c;
-  const std::string source = argv[1];
-  const auto colon = source.find(':');
   const auto ends_with = [&](const std::string& suffix) {
     return source.size() >= suffix.size() && source.compare(source.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
+  const auto colon = source.find(':');
   if(ends_with(".node"))
   {
     for(const auto& p : ES::IO::read_node_file(source).points) c.points.emplace_back(p[0], p[1], p[2]);
@@ -89,11 +82,41 @@ int main(int argc, char** argv)
   }
   else
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
+  return c;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 5 || argc > 7)
+  {
+    std::cerr << "usage: experiment_escape_times SOURCE FIRST LAST MAX_CYCLES [THREADS [SAVE_DIR]]\n";
+    return 2;
+  }
+  const std::string source = argv[1];
+  ES::Conjecture_case<K::Point_3> c;
+  unsigned first = 0, last = 0, threads = 2;
+  try
+  {
+    c = read_source(source);
+    c.max_cycles = std::stoul(argv[4]);
+    first = unsigned(std::stoul(argv[2]));
+    last = unsigned(std::stoul(argv[3]));
+    if(argc >= 6) threads = unsigned(std::stoul(argv[5]));
+  }
+  catch(const std::exception& e) // a file or a number that cannot be read
+  {
+    std::cerr << "experiment_escape_times: " << e.what() << '\n';
+    return 2;
+  }
+  if(last < first || threads == 0)
+  {
+    std::cerr << "experiment_escape_times: FIRST must not exceed LAST, and THREADS must be at least 1\n";
+    return 2;
+  }
   c.strategy = ES::HELPER_STRATEGY;
   c.order = ES::RANDOM_ORDER;
-  c.max_cycles = std::stoul(argv[4]);
-  const unsigned first = unsigned(std::stoul(argv[2])), last = unsigned(std::stoul(argv[3]));
-  const unsigned threads = argc >= 6 ? unsigned(std::stoul(argv[5])) : 2u;
   const std::string save_dir = argc == 7 ? argv[6] : "";
   std::vector<std::string> lines(last - first + 1);
   std::atomic<unsigned> next{first};
