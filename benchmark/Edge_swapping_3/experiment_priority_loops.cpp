@@ -4,7 +4,10 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING [SAVE_DIR]]
+//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]]
+//
+// SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
+// order the faces of point set SET by seed SET.
 //
 // CASE is a case file (its points are used), random-integer:N:SET for the
 // laboratory's N random integer points of set SET, or family:NAME:N:SEED for
@@ -19,6 +22,9 @@
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
+// A run still going after a few cycles is traced for those cycles first: the
+// order is fixed, so a loop certified there is the run's loop at any limit,
+// and only the runs not certified that early are run and traced to MAX_CYCLES.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -40,7 +46,7 @@ int main(int argc, char** argv)
 {
   if(argc < 4 || argc > 6)
   {
-    std::cerr << "usage: experiment_priority_loops CASE LAST_SEED MAX_CYCLES [READING [SAVE_DIR]]\n";
+    std::cerr << "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]]\n";
     return 2;
   }
   ES::Conjecture_case<K::Point_3> c;
@@ -71,7 +77,21 @@ int main(int argc, char** argv)
   c.strategy = ES::HELPER_STRATEGY;
   c.order = ES::PRIORITY_ORDER;
   c.start = ES::GIVEN_CELLS_START;
-  c.max_cycles = std::stoul(argv[3]);
+  unsigned first_seed = 1, last_seed = 0;
+  std::size_t max_cycles = 0;
+  try
+  {
+    const std::string seeds = argv[2];
+    const auto dash = seeds.find('-');
+    if(dash != std::string::npos) first_seed = unsigned(std::stoul(seeds.substr(0, dash)));
+    last_seed = unsigned(std::stoul(dash == std::string::npos ? seeds : seeds.substr(dash + 1)));
+    max_cycles = std::stoul(argv[3]);
+  }
+  catch(const std::exception&)
+  {
+    std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST and MAX_CYCLES a number\n";
+    return 2;
+  }
   std::vector<ES::Helper_reading> readings(1);
   if(argc >= 5 && std::string(argv[4]) == "all")
     readings = ES::all_helper_readings();
@@ -81,13 +101,14 @@ int main(int argc, char** argv)
     return 2;
   }
   const std::string save_dir = argc == 6 ? argv[5] : "";
+  const std::size_t early_cycles = 16;
   for(const ES::Helper_reading& reading : readings)
   {
     c.reading = reading;
     std::cout << "reading " << ES::helper_reading_name(c.reading) << '\n';
     std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
     bool saved = false;
-    for(unsigned seed = 1; seed <= std::stoul(argv[2]); ++seed)
+    for(unsigned seed = first_seed; seed <= last_seed; ++seed)
     {
       std::size_t limit = 0, stuck = 0, certified = 0;
       long long first = -1;
@@ -95,15 +116,34 @@ int main(int argc, char** argv)
       {
         c.cells = ES::oriented_cells(c.points, all.triangulations[t]);
         c.seed = seed;
-        const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
         ++runs;
+        // A few cycles first; what ends in them ends the same at any larger limit.
+        c.max_cycles = std::min<std::size_t>(early_cycles, max_cycles);
+        ES::Conjecture_outcome o = ES::run_conjecture_case(c);
         if(o.equal_to_cgal) continue;
-        (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
-        if(first < 0) first = (long long)t;
         // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
         std::stringstream trace;
-        ES::trace_conjecture_case(c, trace);
-        const trace_checker::Result r = trace_checker::check_trace(trace);
+        trace_checker::Result r;
+        if(o.ending == ES::CYCLE_LIMIT_REACHED && c.max_cycles < max_cycles)
+        {
+          ES::trace_conjecture_case(c, trace);
+          r = trace_checker::check_trace(trace);
+          if(!r.ok || !r.loop_certified) // not certified early: the whole run
+          {
+            c.max_cycles = max_cycles;
+            trace.str("");
+            o = ES::trace_conjecture_case(c, trace);
+            if(o.equal_to_cgal) continue;
+            r = trace_checker::check_trace(trace);
+          }
+        }
+        else
+        {
+          ES::trace_conjecture_case(c, trace);
+          r = trace_checker::check_trace(trace);
+        }
+        (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
+        if(first < 0) first = (long long)t;
         if(!r.ok)
         {
           std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
@@ -119,7 +159,7 @@ int main(int argc, char** argv)
             save_dir + "/loop_" + std::to_string(c.points.size()) + "_points_" + reading_name + ".json";
           if(!std::ifstream(name)) // an earlier run's is kept
           {
-            std::ofstream(name) << ES::IO::conjecture_case_json(c).dump(1) << '\n';
+            std::ofstream(name) << ES::IO::conjecture_case_json(c).dump(1) << '\n'; // with the limit traced
             std::ofstream(name.substr(0, name.size() - 5) + ".trace.jsonl") << trace.str();
           }
           saved = true;
@@ -128,7 +168,7 @@ int main(int argc, char** argv)
       all_limit += limit;
       all_stuck += stuck;
       all_certified += certified;
-      std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << c.max_cycles << " ("
+      std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << max_cycles << " ("
                 << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
     }
     std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified

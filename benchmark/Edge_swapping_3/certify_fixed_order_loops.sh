@@ -1,0 +1,42 @@
+#!/bin/bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Issue 13: the helper in the fixed face order of SEEDS from every fine
+# triangulation of CASE's points, under each reading of Algorithm 4; every
+# run not ending on CGAL's triangulation is traced and replayed by the
+# independent checker, which certifies the loops (experiment_priority_loops).
+# One file per reading in OUTDIR; a reading whose file is complete is not run
+# again, so the script resumes where it stopped. Two processes given disjoint
+# reading lists share the work.
+#
+#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [READING ...]   (default: all 36 readings)
+#
+# CASE and SEEDS as for experiment_priority_loops; the streams order the faces
+# of set SET by seed SET, for example:
+#   certify_fixed_order_loops.sh OUT family:grid-2x2x3:12:1 1
+#   certify_fixed_order_loops.sh OUT family:two-spheres:12:2 2-2
+set -euo pipefail
+usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [READING ...]"
+out=${1:?$usage}
+case_=${2:?$usage}
+seeds=${3:?$usage}
+shift 3
+bin=${EXPERIMENT_PRIORITY_LOOPS:-"$(cd "$(dirname "$0")/../.." && pwd)/build/bin/experiment_priority_loops"}
+readings=("$@")
+if [ ${#readings[@]} -eq 0 ]; then
+  for lifetime in until-destroyed cleared-each-cycle never-cleared; do
+    for needs in pass-over any-tetrahedron facet-cells; do
+      for ending in no-swap-no-tag no-swap; do
+        for visit in "" ",same-cycle"; do readings+=("$lifetime,$needs,$ending$visit"); done
+      done
+    done
+  done
+fi
+mkdir -p "$out"
+for reading in "${readings[@]}"; do
+  file="$out/$reading.txt"
+  if [ -f "$file" ] && grep -q '^all seeds:' "$file"; then continue; fi
+  t0=$(date +%s)
+  "$bin" "$case_" "$seeds" 200 "$reading" > "$file.part"
+  mv "$file.part" "$file"
+  echo "$case_ seeds $seeds, $reading: $(($(date +%s) - t0)) s, $(date -u +%FT%TZ)" >> "$out/progress.txt"
+done
