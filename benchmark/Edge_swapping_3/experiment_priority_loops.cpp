@@ -132,6 +132,7 @@ int main(int argc, char** argv)
           {
             c.max_cycles = max_cycles;
             trace.str("");
+            trace.clear(); // the check read it to its end
             o = ES::trace_conjecture_case(c, trace);
             if(o.equal_to_cgal) continue;
             r = trace_checker::check_trace(trace);

@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Reads the output directories of certify_fixed_order_loops.sh (one file per
+# reading, and progress.txt) and prints a Markdown table: per reading, the
+# runs, those still swapping at the cycle limit, the loops the checker
+# certified among them, those stuck, and the seconds the reading took. The
+# directories may be of different point sets (one per set of a family): a
+# reading's counts are summed over them. Readings not complete in every
+# directory are listed as missing. Exit 1 if a run at the limit was not
+# certified, so that no such claim goes unnoticed.
+#
+#   summarize_certified_loops.py OUTDIR [OUTDIR ...]
+
+import collections
+import os
+import re
+import sys
+
+LINE = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
+TIME = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, ")
+
+
+def all_readings():
+    # The order of certify_fixed_order_loops.sh.
+    return [f"{lifetime},{needs},{ending}{visit}"
+            for lifetime in ("until-destroyed", "cleared-each-cycle", "never-cleared")
+            for needs in ("pass-over", "any-tetrahedron", "facet-cells")
+            for ending in ("no-swap-no-tag", "no-swap")
+            for visit in ("", ",same-cycle")]
+
+
+def main(dirs):
+    totals = collections.OrderedDict()
+    seconds = collections.Counter()
+    complete = collections.Counter()
+    for d in dirs:
+        for name in sorted(os.listdir(d)):
+            if not name.endswith(".txt") or name == "progress.txt":
+                continue
+            reading = name[:-4]
+            with open(os.path.join(d, name)) as f:
+                found = [LINE.match(line.strip()) for line in f]
+            found = [m for m in found if m]
+            if not found:
+                continue
+            row = totals.setdefault(reading, [0, 0, 0, 0])
+            for k in range(4):
+                row[k] += int(found[-1].group(k + 1))
+            complete[reading] += 1
+        progress = os.path.join(d, "progress.txt")
+        if os.path.exists(progress):
+            with open(progress) as f:
+                for line in f:
+                    m = TIME.match(line.strip())
+                    if m:
+                        seconds[m.group(1)] += int(m.group(2))
+    print("| reading | runs | still swapping at cycle 200 | loops certified | stuck | seconds |")
+    print("|---|---:|---:|---:|---:|---:|")
+    uncertified = 0
+    order = {r: k for k, r in enumerate(all_readings())}
+    for reading in sorted(totals, key=lambda r: order.get(r, len(order))):
+        if complete[reading] != len(dirs):
+            continue
+        runs, limit, certified, stuck = totals[reading]
+        uncertified += limit - certified
+        print(f"| `{reading}` | {runs:,} | {limit:,} | {certified:,} | {stuck:,} | {seconds[reading]:,} |")
+    done = [r for r in totals if complete[r] == len(dirs)]
+    print()
+    print(f"{len(done)} readings complete; {sum(totals[r][0] for r in done):,} runs, "
+          f"{sum(totals[r][1] for r in done):,} at the limit, {sum(totals[r][2] for r in done):,} certified loops, "
+          f"{sum(seconds[r] for r in done):,} s")
+    missing = [r for r in totals if complete[r] != len(dirs)]
+    if missing:
+        print("not complete in every directory: " + ", ".join(missing))
+    return 1 if uncertified else 0
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.stderr.write("usage: summarize_certified_loops.py OUTDIR [OUTDIR ...]\n")
+        sys.exit(2)
+    sys.exit(main(sys.argv[1:]))
