@@ -22,9 +22,9 @@
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
-// A run still going after a few cycles is traced for those cycles first: the
-// order is fixed, so a loop certified there is the run's loop at any limit,
-// and only the runs not certified that early are run and traced to MAX_CYCLES.
+// A run still going after 16 cycles is traced for 4 cycles, then 16, and only
+// then to MAX_CYCLES, until the checker certifies a loop: the order is fixed,
+// so a loop certified early is the run's loop at any limit.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -126,17 +126,18 @@ int main(int argc, char** argv)
         trace_checker::Result r;
         if(o.ending == ES::CYCLE_LIMIT_REACHED && c.max_cycles < max_cycles)
         {
-          ES::trace_conjecture_case(c, trace);
-          r = trace_checker::check_trace(trace);
-          if(!r.ok || !r.loop_certified) // not certified early: the whole run
+          // Traced for 4 cycles, then for the early limit, then to MAX_CYCLES, until a loop is certified.
+          for(std::size_t cycles : {std::min<std::size_t>(4, early_cycles), early_cycles, max_cycles})
           {
-            c.max_cycles = max_cycles;
+            c.max_cycles = cycles;
             trace.str("");
-            trace.clear(); // the check read it to its end
+            trace.clear(); // a check read it to its end
             o = ES::trace_conjecture_case(c, trace);
-            if(o.equal_to_cgal) continue;
+            if(o.equal_to_cgal) break;
             r = trace_checker::check_trace(trace);
+            if(r.ok && r.loop_certified) break;
           }
+          if(o.equal_to_cgal) continue;
         }
         else
         {
