@@ -42,41 +42,15 @@
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace ES = CGAL::Edge_swapping_3;
 
-int main(int argc, char** argv)
+namespace {
+
+int run(int argc, char** argv)
 {
   if(argc < 4 || argc > 6)
   {
     std::cerr << "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]]\n";
     return 2;
   }
-  ES::Conjecture_case<K::Point_3> c;
-  const std::string source = argv[1];
-  if(source.rfind("random-integer:", 0) == 0)
-  {
-    const auto colon = source.find(':', 15);
-    c.points = ES::point_families::random_integer<K::Point_3>(std::stoul(source.substr(15, colon - 15)),
-                                                              unsigned(std::stoul(source.substr(colon + 1))));
-  }
-  else if(source.rfind("family:", 0) == 0)
-  {
-    std::vector<std::string> part(1);
-    for(char ch : source.substr(7))
-      if(ch == ':') part.emplace_back();
-      else part.back() += ch;
-    if(part.size() != 3)
-    {
-      std::cerr << "experiment_priority_loops: family:NAME:N:SEED\n";
-      return 2;
-    }
-    c.points = ES::make_point_family<K::Point_3>(part[0], std::stoul(part[1]), unsigned(std::stoul(part[2])));
-  }
-  else
-    c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
-  const auto all = ES::IO::topcom_triangulations(c.points, 1000000);
-  std::cout << c.points.size() << " points, " << all.triangulations.size() << " triangulations\n";
-  c.strategy = ES::HELPER_STRATEGY;
-  c.order = ES::PRIORITY_ORDER;
-  c.start = ES::GIVEN_CELLS_START;
   unsigned first_seed = 1, last_seed = 0;
   std::size_t max_cycles = 0;
   try
@@ -100,6 +74,51 @@ int main(int argc, char** argv)
     std::cerr << "experiment_priority_loops: unknown reading '" << argv[4] << "'\n";
     return 2;
   }
+  ES::Conjecture_case<K::Point_3> c;
+  const std::string source = argv[1];
+  if(source.rfind("random-integer:", 0) == 0)
+  {
+    const auto colon = source.find(':', 15);
+    try
+    {
+      c.points = ES::point_families::random_integer<K::Point_3>(std::stoul(source.substr(15, colon - 15)),
+                                                                unsigned(std::stoul(source.substr(colon + 1))));
+    }
+    catch(const std::invalid_argument&)
+    {
+      std::cerr << "experiment_priority_loops: random-integer:N:SET, with numbers N and SET\n";
+      return 2;
+    }
+  }
+  else if(source.rfind("family:", 0) == 0)
+  {
+    std::vector<std::string> part(1);
+    for(char ch : source.substr(7))
+      if(ch == ':') part.emplace_back();
+      else part.back() += ch;
+    std::size_t n = 0, seed = 0;
+    try
+    {
+      if(part.size() == 3) n = std::stoul(part[1]), seed = std::stoul(part[2]);
+    }
+    catch(const std::invalid_argument&)
+    {
+      part.clear();
+    }
+    if(part.size() != 3)
+    {
+      std::cerr << "experiment_priority_loops: family:NAME:N:SEED, with numbers N and SEED\n";
+      return 2;
+    }
+    c.points = ES::make_point_family<K::Point_3>(part[0], n, unsigned(seed));
+  }
+  else
+    c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
+  const auto all = ES::IO::topcom_triangulations(c.points, 1000000);
+  std::cout << c.points.size() << " points, " << all.triangulations.size() << " triangulations\n";
+  c.strategy = ES::HELPER_STRATEGY;
+  c.order = ES::PRIORITY_ORDER;
+  c.start = ES::GIVEN_CELLS_START;
   const std::string save_dir = argc == 6 ? argv[5] : "";
   const std::size_t early_cycles = 16;
   for(const ES::Helper_reading& reading : readings)
@@ -177,4 +196,19 @@ int main(int argc, char** argv)
               << " loops certified by the checker), " << all_stuck << " stuck\n";
   }
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const std::exception& e) // a file, point family or number that cannot be read
+  {
+    std::cerr << "experiment_priority_loops: " << e.what() << '\n';
+    return 2;
+  }
 }
