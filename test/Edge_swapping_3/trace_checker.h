@@ -41,8 +41,9 @@
 #define EDGE_SWAPPING_3_TEST_TRACE_CHECKER_H
 
 #include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
@@ -60,6 +61,8 @@
 namespace trace_checker {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K; // exact predicates
+// Exact volumes: plain rationals, as a lazy kernel's thread-safe evaluation costs more than it saves here.
+typedef CGAL::Simple_cartesian<CGAL::Exact_rational> EK;
 typedef K::Point_3 Point;
 typedef std::array<std::size_t, 4> Cell;  // sorted point numbers
 typedef std::array<std::size_t, 3> Facet; // sorted point numbers
@@ -321,17 +324,17 @@ private:
   /// the cells' volumes add up to the hull's.
   void check_start() const
   {
-    typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
     CGAL::Cartesian_converter<K, EK> to_exact;
     const EK::FT cells_volume = volume(std::vector<Cell>(cells_.begin(), cells_.end()));
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2)
         require(orientation(f[0], f[1], f[2], apex(holders[0], f)) == -orientation(f[0], f[1], f[2], apex(holders[1], f)),
                 "two cells on the same side of a facet in the start");
-    CGAL::Delaunay_triangulation_3<EK> hull;
-    for(const Point& p : points_) hull.insert(to_exact(p));
+    CGAL::Delaunay_triangulation_3<K> hull(points_.begin(), points_.end()); // its cells fill the hull; exact predicates
     EK::FT hull_volume = 0;
-    for(auto c : hull.finite_cell_handles()) hull_volume += hull.tetrahedron(c).volume();
+    for(auto c : hull.finite_cell_handles())
+      hull_volume += CGAL::volume(to_exact(c->vertex(0)->point()), to_exact(c->vertex(1)->point()),
+                                  to_exact(c->vertex(2)->point()), to_exact(c->vertex(3)->point()));
     require(cells_volume == hull_volume, "the start's cells do not fill the convex hull once");
   }
 
@@ -466,9 +469,8 @@ private:
   }
 
   /// The cells' total volume, exactly.
-  CGAL::Exact_predicates_exact_constructions_kernel::FT volume(const std::vector<Cell>& cells) const
+  EK::FT volume(const std::vector<Cell>& cells) const
   {
-    typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
     CGAL::Cartesian_converter<K, EK> to_exact;
     EK::FT sum = 0;
     for(const Cell& t : cells)
