@@ -8,18 +8,26 @@
 # again, so the script resumes where it stopped. Two processes given disjoint
 # reading lists share the work.
 #
-#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [READING ...]   (default: all 36 readings)
+#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [READING ...]   (default: all 36 readings)
 #
 # CASE and SEEDS as for experiment_priority_loops; the streams order the faces
 # of set SET by seed SET, for example:
 #   certify_fixed_order_loops.sh OUT family:grid-2x2x3:12:1 1
 #   certify_fixed_order_loops.sh OUT family:two-spheres:12:2 2-2
+# With --shard I/N, only the starts numbered I modulo N: give each shard its own
+# OUTDIR (on any machine); summarize_certified_loops.py adds the shards up.
+#   certify_fixed_order_loops.sh OUT/set1_shard0 random-integer:12:1 1-1 --shard 0/4 until-destroyed,pass-over,no-swap-no-tag
 set -euo pipefail
-usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [READING ...]"
+usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [READING ...]"
 out=${1:?$usage}
 case_=${2:?$usage}
 seeds=${3:?$usage}
 shift 3
+shard=()
+if [ "${1:-}" = --shard ]; then
+  shard=(--shard "${2:?$usage}")
+  shift 2
+fi
 bin=${EXPERIMENT_PRIORITY_LOOPS:-"$(cd "$(dirname "$0")/../.." && pwd)/build/bin/experiment_priority_loops"}
 readings=("$@")
 if [ ${#readings[@]} -eq 0 ]; then
@@ -36,7 +44,7 @@ for reading in "${readings[@]}"; do
   file="$out/$reading.txt"
   if [ -f "$file" ] && grep -q '^all seeds:' "$file"; then continue; fi
   t0=$(date +%s)
-  "$bin" "$case_" "$seeds" 200 "$reading" > "$file.part"
+  "$bin" "$case_" "$seeds" 200 "$reading" "${shard[@]}" > "$file.part"
   mv "$file.part" "$file"
-  echo "$case_ seeds $seeds, $reading: $(($(date +%s) - t0)) s, $(date -u +%FT%TZ)" >> "$out/progress.txt"
+  echo "$case_ seeds $seeds${shard:+ ${shard[*]}}, $reading: $(($(date +%s) - t0)) s, $(date -u +%FT%TZ)" >> "$out/progress.txt"
 done

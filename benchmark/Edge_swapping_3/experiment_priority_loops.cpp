@@ -4,10 +4,15 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]]
+//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N]
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
-// order the faces of point set SET by seed SET.
+// order the faces of point set SET by seed SET. With --shard I/N, only the
+// triangulations numbered I modulo N (in TOPCOM's order) are starts: N shards
+// together are the whole run, and their counts add up.
+//
+// Up to 10^6 triangulations are held in memory; a point set with more is
+// streamed from TOPCOM again for each reading and seed, never held.
 //
 // CASE is a case file (its points are used), random-integer:N:SET for the
 // laboratory's N random integer points of set SET, or family:NAME:N:SEED for
@@ -34,6 +39,7 @@
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "trace_checker.h"
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -45,11 +51,44 @@ namespace ES = CGAL::Edge_swapping_3;
 
 namespace {
 
+const char* const usage = "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N]\n";
+
+/// The checker refused a trace: the run stops.
+struct Refused
+{
+};
+
 int run(int argc, char** argv)
 {
+  std::size_t shard = 0, shards = 1;
+  for(int k = 1; k < argc; ++k)
+    if(std::string(argv[k]) == "--shard")
+    {
+      const std::string value = k + 1 < argc ? argv[k + 1] : "";
+      const auto slash = value.find('/');
+      try
+      {
+        if(slash == std::string::npos || value.find_first_not_of("0123456789/") != std::string::npos)
+          throw std::invalid_argument(value);
+        shard = std::stoul(value.substr(0, slash));
+        shards = std::stoul(value.substr(slash + 1));
+      }
+      catch(const std::exception&)
+      {
+        shards = 0;
+      }
+      if(shards == 0 || shard >= shards)
+      {
+        std::cerr << "experiment_priority_loops: --shard I/N, with whole numbers I < N\n";
+        return 2;
+      }
+      std::copy(argv + k + 2, argv + argc, argv + k); // the positional arguments, in order
+      argc -= 2;
+      break;
+    }
   if(argc < 4 || argc > 6)
   {
-    std::cerr << "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]]\n";
+    std::cerr << usage;
     return 2;
   }
   unsigned first_seed = 1, last_seed = 0;
@@ -115,8 +154,30 @@ int run(int argc, char** argv)
   }
   else
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
-  const auto all = ES::IO::topcom_triangulations(c.points, 1000000);
-  std::cout << c.points.size() << " points, " << all.triangulations.size() << " triangulations\n";
+  // Held when there are at most 10^6; else streamed from TOPCOM for each reading and seed.
+  const std::size_t hold_limit = 1000000;
+  auto held = ES::IO::topcom_triangulations(c.points, hold_limit);
+  if(held.truncated) held.triangulations = decltype(held.triangulations)(); // memory back
+  const auto for_each_start = [&](auto visit) {
+    if(!held.truncated)
+    {
+      for(std::size_t t = 0; t < held.triangulations.size(); ++t)
+        if(t % shards == shard) visit(t, held.triangulations[t]);
+      return;
+    }
+    ES::IO::for_each_topcom_triangulation(c.points, std::size_t(-1),
+                                          [&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
+                                            if(t % shards == shard) visit(t, cells);
+                                            return true;
+                                          });
+  };
+  std::cout << c.points.size() << " points, ";
+  if(held.truncated)
+    std::cout << "more than " << hold_limit << " triangulations, streamed";
+  else
+    std::cout << held.triangulations.size() << " triangulations";
+  if(shards > 1) std::cout << ", shard " << shard << '/' << shards << " (the triangulations numbered " << shard << " modulo " << shards << ')';
+  std::cout << '\n';
   c.strategy = ES::HELPER_STRATEGY;
   c.order = ES::PRIORITY_ORDER;
   c.start = ES::GIVEN_CELLS_START;
@@ -133,15 +194,14 @@ int run(int argc, char** argv)
     {
       std::size_t limit = 0, stuck = 0, certified = 0;
       long long first = -1;
-      for(std::size_t t = 0; t < all.triangulations.size(); ++t)
-      {
-        c.cells = ES::oriented_cells(c.points, all.triangulations[t]);
+      for_each_start([&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
+        c.cells = ES::oriented_cells(c.points, cells);
         c.seed = seed;
         ++runs;
         // A few cycles first; what ends in them ends the same at any larger limit.
         c.max_cycles = std::min<std::size_t>(early_cycles, max_cycles);
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
-        if(o.equal_to_cgal) continue;
+        if(o.equal_to_cgal) return;
         // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
         std::stringstream trace;
         trace_checker::Result r;
@@ -165,7 +225,7 @@ int run(int argc, char** argv)
               break;
             }
           }
-          if(o.equal_to_cgal) continue;
+          if(o.equal_to_cgal) return;
         }
         else
         {
@@ -177,7 +237,7 @@ int run(int argc, char** argv)
         if(!r.ok)
         {
           std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
-          return 1;
+          throw Refused();
         }
         certified += r.loop_certified;
         if(r.loop_certified && !saved && !save_dir.empty())
@@ -194,7 +254,7 @@ int run(int argc, char** argv)
           }
           saved = true;
         }
-      }
+      });
       all_limit += limit;
       all_stuck += stuck;
       all_certified += certified;
@@ -214,6 +274,10 @@ int main(int argc, char** argv)
   try
   {
     return run(argc, argv);
+  }
+  catch(const Refused&)
+  {
+    return 1;
   }
   catch(const std::exception& e) // a file, point family or number that cannot be read
   {
