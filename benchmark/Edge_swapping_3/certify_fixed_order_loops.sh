@@ -30,15 +30,7 @@ if [ "${1:-}" = --shard ]; then
 fi
 bin=${EXPERIMENT_PRIORITY_LOOPS:-"$(cd "$(dirname "$0")/../.." && pwd)/build/bin/experiment_priority_loops"}
 readings=("$@")
-if [ ${#readings[@]} -eq 0 ]; then
-  for lifetime in until-destroyed cleared-each-cycle never-cleared; do
-    for needs in pass-over any-tetrahedron facet-cells; do
-      for ending in no-swap-no-tag no-swap; do
-        for visit in "" ",same-cycle"; do readings+=("$lifetime,$needs,$ending$visit"); done
-      done
-    done
-  done
-fi
+if [ ${#readings[@]} -eq 0 ]; then mapfile -t readings < <("$bin" --list-readings); fi
 mkdir -p "$out"
 for reading in "${readings[@]}"; do
   file="$out/$reading.txt"

@@ -5,6 +5,7 @@
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
 //   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N]
+//   experiment_priority_loops --list-readings     (the 36 readings' names, one a line)
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
 // order the faces of point set SET by seed SET. With --shard I/N, only the
@@ -60,6 +61,11 @@ struct Refused
 
 int run(int argc, char** argv)
 {
+  if(argc == 2 && std::string(argv[1]) == "--list-readings")
+  {
+    for(const ES::Helper_reading& reading : ES::all_helper_readings()) std::cout << ES::helper_reading_name(reading) << '\n';
+    return 0;
+  }
   std::size_t shard = 0, shards = 1;
   for(int k = 1; k < argc; ++k)
     if(std::string(argv[k]) == "--shard")

@@ -14,6 +14,7 @@
 import collections
 import os
 import re
+import subprocess
 import sys
 
 LINE = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
@@ -21,12 +22,14 @@ TIME = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, ")
 
 
 def all_readings():
-    # The order of certify_fixed_order_loops.sh.
-    return [f"{lifetime},{needs},{ending}{visit}"
-            for lifetime in ("until-destroyed", "cleared-each-cycle", "never-cleared")
-            for needs in ("pass-over", "any-tetrahedron", "facet-cells")
-            for ending in ("no-swap-no-tag", "no-swap")
-            for visit in ("", ",same-cycle")]
+    # The rows in the order of experiment_priority_loops --list-readings (as
+    # certify_fixed_order_loops.sh runs them), else by name.
+    program = os.environ.get("EXPERIMENT_PRIORITY_LOOPS", os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "bin", "experiment_priority_loops"))
+    try:
+        return subprocess.run([program, "--list-readings"], capture_output=True, text=True, check=True).stdout.split()
+    except (OSError, subprocess.CalledProcessError):
+        return []
 
 
 def main(dirs):
@@ -58,7 +61,7 @@ def main(dirs):
     print("|---|---:|---:|---:|---:|---:|")
     uncertified = 0
     order = {r: k for k, r in enumerate(all_readings())}
-    for reading in sorted(totals, key=lambda r: order.get(r, len(order))):
+    for reading in sorted(totals, key=lambda r: (order.get(r, len(order)), r)):
         if complete[reading] != len(dirs):
             continue
         runs, limit, certified, stuck = totals[reading]
