@@ -203,7 +203,9 @@ int run(int argc, char** argv)
       for_each_start([&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
         c.cells = ES::oriented_cells(c.points, cells);
         c.seed = seed;
-        ++runs;
+        if(++runs % 100000 == 0) // progress of a long run, on stderr
+          std::cerr << "reading " << ES::helper_reading_name(c.reading) << ": " << runs << " runs; seed " << seed
+                    << ": " << limit << " at the limit so far\n";
         // A few cycles first; what ends in them ends the same at any larger limit.
         c.max_cycles = std::min<std::size_t>(early_cycles, max_cycles);
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
