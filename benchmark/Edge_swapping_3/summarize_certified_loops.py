@@ -5,9 +5,9 @@
 # runs, those still swapping at the cycle limit, the loops the checker
 # certified among them, those stuck, and the seconds the reading took. The
 # directories may be of different point sets (one per set of a family) or
-# shards (--shard I/N) of one: a reading's counts are summed over them. Readings not complete in every
-# directory are listed as missing. Exit 1 if a run at the limit was not
-# certified, so that no such claim goes unnoticed.
+# shards (--shard I/N) of one: a reading's counts are summed over them.
+# Readings not complete in every directory are listed as missing. Exit 1 if a
+# run at the limit was not certified, so that no such claim goes unnoticed.
 #
 #   summarize_certified_loops.py OUTDIR [OUTDIR ...]
 
