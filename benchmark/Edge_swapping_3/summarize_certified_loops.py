@@ -69,7 +69,7 @@ def main(dirs):
         print(f"| `{reading}` | {runs:,} | {limit:,} | {certified:,} | {stuck:,} | {seconds[reading]:,} |")
     done = [r for r in totals if complete[r] == len(dirs)]
     print()
-    print(f"{len(done)} readings complete; {sum(totals[r][0] for r in done):,} runs, "
+    print(f"readings complete: {len(done)}; {sum(totals[r][0] for r in done):,} runs, "
           f"{sum(totals[r][1] for r in done):,} at the limit, {sum(totals[r][2] for r in done):,} certified loops, "
           f"{sum(seconds[r] for r in done):,} s")
     missing = [r for r in totals if complete[r] != len(dirs)]
@@ -81,5 +81,9 @@ def main(dirs):
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.stderr.write("usage: summarize_certified_loops.py OUTDIR [OUTDIR ...]\n")
+        sys.exit(2)
+    missing_dirs = [d for d in sys.argv[1:] if not os.path.isdir(d)]
+    if missing_dirs:
+        sys.stderr.write("summarize_certified_loops.py: not a directory: " + ", ".join(missing_dirs) + "\n")
         sys.exit(2)
     sys.exit(main(sys.argv[1:]))
