@@ -28,10 +28,10 @@
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
-// A run still going after 16 cycles is traced for 4 cycles, then 16, and only
-// then to MAX_CYCLES, until the checker certifies a loop: the order is fixed,
-// so a loop certified early is the run's loop at any limit. The ladder starts
-// on the rung (4 or 16) that certified the reading's last loop.
+// A run still going after 16 cycles is traced for 4 cycles, then 16, 32, 64
+// and so on up to MAX_CYCLES, until the checker certifies a loop: the order is
+// fixed, so a loop certified early is the run's loop at any limit. The ladder
+// starts on 16 when that certified the reading's last loop.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -189,6 +189,9 @@ int run(int argc, char** argv)
   c.start = ES::GIVEN_CELLS_START;
   const std::string save_dir = argc == 6 ? argv[5] : "";
   const std::size_t early_cycles = 16;
+  std::vector<std::size_t> rungs{4, early_cycles}; // of the trace ladder below
+  for(std::size_t cycles = 2 * early_cycles; cycles < max_cycles; cycles *= 2) rungs.push_back(cycles);
+  rungs.push_back(max_cycles);
   for(const ES::Helper_reading& reading : readings)
   {
     c.reading = reading;
@@ -215,11 +218,11 @@ int run(int argc, char** argv)
         trace_checker::Result r;
         if(o.ending == ES::CYCLE_LIMIT_REACHED && c.max_cycles < max_cycles)
         {
-          // Traced for 4 cycles, then for the early limit, then to MAX_CYCLES, until a loop is certified.
-          // The runs of a reading tend to close their loops alike, so the ladder starts on the
-          // rung that certified the last loop (a loop certified on a rung is certified on the next).
-          const std::size_t rungs[] = {4, early_cycles, max_cycles};
-          for(std::size_t k = first_rung; k < 3; ++k)
+          // Traced for 4 cycles, then 16, 32, 64 and so on up to MAX_CYCLES, until a loop is
+          // certified: a trace at most twice the length needed, and the failed ones shorter together.
+          // The runs of a reading tend to close their loops alike, so the ladder starts on 16
+          // when that certified the last loop (a loop certified on a rung is certified on the next).
+          for(std::size_t k = first_rung; k < rungs.size(); ++k)
           {
             c.max_cycles = rungs[k];
             trace.str("");
