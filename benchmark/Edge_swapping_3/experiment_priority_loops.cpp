@@ -199,6 +199,7 @@ int run(int argc, char** argv)
     std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
     bool saved = false;
     std::size_t first_rung = 0; // of the ladder below
+    std::vector<std::size_t> certified_on(rungs.size()); // loops certified on each rung
     for(unsigned seed = first_seed; seed <= last_seed; ++seed)
     {
       std::size_t limit = 0, stuck = 0, certified = 0;
@@ -232,6 +233,7 @@ int run(int argc, char** argv)
             r = trace_checker::check_trace(trace);
             if(r.ok && r.loop_certified)
             {
+              ++certified_on[k];
               first_rung = std::min<std::size_t>(k, 1);
               break;
             }
@@ -271,6 +273,12 @@ int run(int argc, char** argv)
       all_certified += certified;
       std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << max_cycles << " ("
                 << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
+    }
+    if(max_cycles > early_cycles) // the ladder was used
+    {
+      std::cout << "loops certified by cycles traced:";
+      for(std::size_t k = 0; k < rungs.size(); ++k)
+        std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
     }
     std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
               << " loops certified by the checker), " << all_stuck << " stuck\n";
