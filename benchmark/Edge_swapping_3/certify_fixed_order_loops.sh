@@ -8,7 +8,7 @@
 # again, so the script resumes where it stopped. Two processes given disjoint
 # reading lists share the work.
 #
-#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [READING ...]   (default: all 36 readings)
+#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [READING ...]   (default: all 36 readings)
 #
 # CASE and SEEDS as for experiment_priority_loops; the streams order the faces
 # of set SET by seed SET, for example:
@@ -17,17 +17,19 @@
 # With --shard I/N, only the starts numbered I modulo N: give each shard its own
 # OUTDIR (on any machine); summarize_certified_loops.py adds the shards up.
 #   certify_fixed_order_loops.sh OUT/set1_shard0 random-integer:12:1 1-1 --shard 0/4 until-destroyed,pass-over,no-swap-no-tag
+# --hold N is passed on to experiment_priority_loops (--hold 0: a set known to
+# have more than 10^6 triangulations is streamed without enumerating it first).
 set -euo pipefail
-usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [READING ...]"
+usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [READING ...]"
 out=${1:?$usage}
 case_=${2:?$usage}
 seeds=${3:?$usage}
 shift 3
-shard=()
-if [ "${1:-}" = --shard ]; then
-  shard=(--shard "${2:?$usage}")
+options=() # passed on
+while [ "${1:-}" = --shard ] || [ "${1:-}" = --hold ]; do
+  options+=("$1" "${2:?$usage}")
   shift 2
-fi
+done
 bin=${EXPERIMENT_PRIORITY_LOOPS:-"$(cd "$(dirname "$0")/../.." && pwd)/build/bin/experiment_priority_loops"}
 readings=("$@")
 if [ ${#readings[@]} -eq 0 ]; then mapfile -t readings < <("$bin" --list-readings); fi
@@ -36,7 +38,13 @@ for reading in "${readings[@]}"; do
   file="$out/$reading.txt"
   if [ -f "$file" ] && grep -q '^all seeds:' "$file"; then continue; fi
   t0=$(date +%s)
-  "$bin" "$case_" "$seeds" 200 "$reading" "${shard[@]}" > "$file.part"
+  # A failed run (a bad option: exit 2) leaves no file, nor a directory it made.
+  "$bin" "$case_" "$seeds" 200 "$reading" "${options[@]}" > "$file.part" || {
+    status=$?
+    rm -f "$file.part"
+    rmdir --ignore-fail-on-non-empty "$out"
+    exit $status
+  }
   mv "$file.part" "$file"
-  echo "$case_ seeds $seeds${shard:+ ${shard[*]}}, $reading: $(($(date +%s) - t0)) s, $(date -u +%FT%TZ)" >> "$out/progress.txt"
+  echo "$case_ seeds $seeds${options:+ ${options[*]}}, $reading: $(($(date +%s) - t0)) s, $(date -u +%FT%TZ)" >> "$out/progress.txt"
 done

@@ -4,7 +4,7 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N]
+//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N]
 //   experiment_priority_loops --list-readings     (the 36 readings' names, one a line)
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
@@ -12,8 +12,10 @@
 // triangulations numbered I modulo N (in TOPCOM's order) are starts: N shards
 // together are the whole run, and their counts add up.
 //
-// Up to 10^6 triangulations are held in memory; a point set with more is
-// streamed from TOPCOM again for each reading and seed, never held.
+// Up to 10^6 triangulations (--hold N: N) are held in memory; a point set
+// with more is streamed from TOPCOM again for each reading and seed, never
+// held. Finding that out costs enumerating the first 10^6 once more (about
+// 40 s and 1 GB for 12 points): --hold 0 streams from the start.
 //
 // CASE is a case file (its points are used), random-integer:N:SET for the
 // laboratory's N random integer points of set SET, or family:NAME:N:SEED for
@@ -52,7 +54,8 @@ namespace ES = CGAL::Edge_swapping_3;
 
 namespace {
 
-const char* const usage = "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N]\n";
+const char* const usage =
+  "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N]\n";
 
 /// The checker refused a trace: the run stops.
 struct Refused
@@ -66,32 +69,43 @@ int run(int argc, char** argv)
     for(const ES::Helper_reading& reading : ES::all_helper_readings()) std::cout << ES::helper_reading_name(reading) << '\n';
     return 0;
   }
-  std::size_t shard = 0, shards = 1;
-  for(int k = 1; k < argc; ++k)
-    if(std::string(argv[k]) == "--shard")
+  std::size_t shard = 0, shards = 1, hold_limit = 1000000;
+  for(int k = 1; k < argc;)
+  {
+    const std::string option = argv[k];
+    if(option != "--shard" && option != "--hold")
     {
-      const std::string value = k + 1 < argc ? argv[k + 1] : "";
-      const auto slash = value.find('/');
-      try
-      {
-        if(slash == std::string::npos || value.find_first_not_of("0123456789/") != std::string::npos)
-          throw std::invalid_argument(value);
-        shard = std::stoul(value.substr(0, slash));
-        shards = std::stoul(value.substr(slash + 1));
-      }
-      catch(const std::exception&)
-      {
-        shards = 0;
-      }
-      if(shards == 0 || shard >= shards)
-      {
-        std::cerr << "experiment_priority_loops: --shard I/N, with whole numbers I < N\n";
-        return 2;
-      }
-      std::copy(argv + k + 2, argv + argc, argv + k); // the positional arguments, in order
-      argc -= 2;
-      break;
+      ++k;
+      continue;
     }
+    const std::string value = k + 1 < argc ? argv[k + 1] : "";
+    bool ok = !value.empty() && value.find_first_not_of(option == "--shard" ? "0123456789/" : "0123456789") == std::string::npos;
+    try
+    {
+      if(ok && option == "--hold")
+        hold_limit = std::stoul(value);
+      else if(ok)
+      {
+        const auto slash = value.find('/');
+        ok = slash != std::string::npos;
+        if(ok) shard = std::stoul(value.substr(0, slash)), shards = std::stoul(value.substr(slash + 1));
+        ok = ok && shards > 0 && shard < shards;
+      }
+    }
+    catch(const std::exception&) // empty or too large
+    {
+      ok = false;
+    }
+    if(!ok)
+    {
+      std::cerr << "experiment_priority_loops: " << option
+                << (option == "--shard" ? " I/N, with whole numbers I < N" : " N, a whole number") << ", not '" << value
+                << "'\n";
+      return 2;
+    }
+    std::copy(argv + k + 2, argv + argc, argv + k); // the positional arguments, in order
+    argc -= 2;
+  }
   if(argc < 4 || argc > 6)
   {
     std::cerr << usage;
@@ -160,9 +174,10 @@ int run(int argc, char** argv)
   }
   else
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
-  // Held when there are at most 10^6; else streamed from TOPCOM for each reading and seed.
-  const std::size_t hold_limit = 1000000;
-  auto held = ES::IO::topcom_triangulations(c.points, hold_limit);
+  // Held when there are at most hold_limit; else streamed from TOPCOM for each reading and seed.
+  ES::IO::Topcom_triangulations held;
+  held.truncated = true; // --hold 0: streamed, without enumerating first
+  if(hold_limit > 0) held = ES::IO::topcom_triangulations(c.points, hold_limit);
   if(held.truncated) held.triangulations = decltype(held.triangulations)(); // memory back
   const auto for_each_start = [&](auto visit) {
     if(!held.truncated)
@@ -178,7 +193,9 @@ int run(int argc, char** argv)
                                           });
   };
   std::cout << c.points.size() << " points, ";
-  if(held.truncated)
+  if(held.truncated && hold_limit == 0)
+    std::cout << "triangulations streamed";
+  else if(held.truncated)
     std::cout << "more than " << hold_limit << " triangulations, streamed";
   else
     std::cout << held.triangulations.size() << " triangulations";

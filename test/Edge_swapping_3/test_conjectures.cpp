@@ -262,6 +262,53 @@ TEST_CASE("TOPCOM streamed: each triangulation as it comes, the same as the list
                                                 [&](std::size_t, const auto&) { return false; }) == 1);
 }
 
+TEST_CASE("TOPCOM failing after part of its list: an error naming how many it gave, not a short count",
+          "[conjectures]")
+{
+  // A stand-in for TOPCOM, found first on PATH: two triangulations of the 5 points below, then a failure.
+  const auto dir = std::filesystem::temp_directory_path() / ("edge_swapping_3_fake_topcom_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string old_path = std::getenv("PATH") ? std::getenv("PATH") : "";
+  const std::vector<Point> points{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(1, 1, 1)};
+  for(const std::string ending : {"exit 1", "kill -9 $$"})
+  {
+    {
+      std::ofstream fake(dir / "topcom-points2allfinetriangs");
+      fake << "#!/bin/sh\ncat > /dev/null\necho 'T[0,0,0] := {{0,1,2,3},{1,2,3,4}};'\n"
+           << "echo 'T[0,0,1] := {{0,1,2,4},{0,1,3,4},{0,2,3,4}};'\n" << ending << "\n";
+    }
+    std::filesystem::permissions(dir / "topcom-points2allfinetriangs", std::filesystem::perms::owner_all);
+    ::setenv("PATH", (dir.string() + ":" + old_path).c_str(), 1);
+    std::size_t seen = 0;
+    std::string error;
+    try
+    {
+      ES::IO::for_each_topcom_triangulation(points, 1000, [&](std::size_t, const auto&) { return ++seen > 0; });
+    }
+    catch(const std::runtime_error& e)
+    {
+      error = e.what();
+    }
+    bool held_list_refused = false;
+    try
+    {
+      ES::IO::topcom_triangulations(points, 1000);
+    }
+    catch(const std::runtime_error&)
+    {
+      held_list_refused = true;
+    }
+    ::setenv("PATH", old_path.c_str(), 1);
+    INFO(ending);
+    REQUIRE(seen == 2);
+    REQUIRE(error.find("TOPCOM failed after 2 triangulations") == 0);
+    REQUIRE(held_list_refused);
+  }
+  std::filesystem::remove_all(dir);
+  // The real TOPCOM gives the same 5 points' two triangulations and ends well.
+  REQUIRE(ES::IO::topcom_triangulations(points, 1000).triangulations.size() == 2);
+}
+
 namespace {
 
 std::vector<std::string> text_lines(const std::string& text)

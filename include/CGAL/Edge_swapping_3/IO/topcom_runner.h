@@ -47,8 +47,9 @@ inline std::string topcom_program()
 /// `visit` returns false or `limit` have been visited. Returns the number
 /// visited. TOPCOM reads its input from a file of the temporary folder that
 /// is removed on every path out. Throws `std::invalid_argument` for points
-/// that TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails,
-/// and what `visit` throws.
+/// that TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails
+/// (also after some triangulations were visited: a list cut short is not
+/// taken for the whole), and what `visit` throws.
 template <class Point, class Visit>
 std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std::size_t limit, Visit visit)
 {
@@ -99,7 +100,9 @@ std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std:
   {
     const int status = ::pclose(pipe.file);
     pipe.file = nullptr;
-    if(status != 0 && visited == 0) throw std::runtime_error("TOPCOM failed: " + command);
+    // TOPCOM ends with 0 when its list is whole: a list cut short by a crash is not a count.
+    if(status != 0)
+      throw std::runtime_error("TOPCOM failed after " + std::to_string(visited) + " triangulations: " + command);
   }
   return visited;
 }

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The laboratory's certification pipeline end to end (a ctest test): the 8
+# points of fixtures/helper_priority_loop_8_points.json from each of their 131
+# fine triangulations (TOPCOM), seeds 1 to 20, under two readings, through
+# certify_fixed_order_loops.sh and summarize_certified_loops.py, whole and in
+# three streamed shards. The counts are those of doc/Edge_swapping_3/conjectures.md.
+#
+#   certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR
+set -euo pipefail
+export EXPERIMENT_PRIORITY_LOOPS=${1:?usage: certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR}
+source_dir=${2:?}
+work=${3:?}
+fixture=$source_dir/test/Edge_swapping_3/fixtures/helper_priority_loop_8_points.json
+certify=$source_dir/benchmark/Edge_swapping_3/certify_fixed_order_loops.sh
+summarize=$source_dir/benchmark/Edge_swapping_3/summarize_certified_loops.py
+readings=(until-destroyed,pass-over,no-swap-no-tag never-cleared,any-tetrahedron,no-swap,same-cycle)
+rm -rf "$work"
+mkdir -p "$work"
+fail() {
+  echo "FAILED: $*" >&2
+  exit 1
+}
+# The table without its seconds column (times differ from run to run).
+table() { python3 "$summarize" "$@" | sed -E 's/ [0-9,]+ \|$/ |/; s/, [0-9,]+ s$//'; }
+
+bash "$certify" "$work/whole" "$fixture" 1-20 "${readings[@]}"
+whole=$(table "$work/whole")
+echo "$whole"
+grep -qF '| `until-destroyed,pass-over,no-swap-no-tag` | 2,620 | 174 | 174 | 0 |' <<< "$whole" ||
+  fail "the package's reading: 2,620 runs, 174 loops certified"
+grep -qF '| `never-cleared,any-tetrahedron,no-swap,same-cycle` | 2,620 | 445 | 445 | 0 |' <<< "$whole" ||
+  fail "never-cleared,any-tetrahedron,no-swap,same-cycle: 2,620 runs, 445 loops certified"
+
+# Three shards, streamed from TOPCOM (--hold 0), add up to the whole.
+for s in 0 1 2; do bash "$certify" "$work/shard$s" "$fixture" 1-20 --shard $s/3 --hold 0 "${readings[@]}"; done
+grep -q "^8 points, triangulations streamed, shard 1/3" "$work/shard1/${readings[0]}.txt" || fail "shard 1/3 not streamed"
+[ "$(table "$work/shard0" "$work/shard1" "$work/shard2")" = "$whole" ] || fail "the three shards do not add up to the whole"
+[ "$(table "$work/shard0")" != "$whole" ] || fail "one shard is the whole"
+
+# A complete reading is not run again.
+before=$(wc -l < "$work/whole/progress.txt")
+bash "$certify" "$work/whole" "$fixture" 1-20 "${readings[@]}"
+[ "$(wc -l < "$work/whole/progress.txt")" = "$before" ] || fail "a complete reading ran again"
+
+# A run at the limit that is not certified is an error of the summary (exit 1);
+# a directory that is not there, exit 2.
+mkdir -p "$work/uncertified"
+echo "all seeds: 10 runs, 3 still swapping (2 loops certified by the checker), 0 stuck" > "$work/uncertified/${readings[0]}.txt"
+status=0
+python3 "$summarize" "$work/uncertified" > /dev/null || status=$?
+[ $status = 1 ] || fail "an uncertified loop: exit $status, not 1"
+status=0
+python3 "$summarize" "$work/not_there" 2> /dev/null || status=$?
+[ $status = 2 ] || fail "a missing directory: exit $status, not 2"
+
+# Bad options: exit 2, no output file.
+for bad in "--shard 3/3" "--shard x" "--hold -1"; do
+  status=0
+  # shellcheck disable=SC2086 # the option and its value, split
+  bash "$certify" "$work/bad" "$fixture" 1-20 $bad "${readings[0]}" 2> /dev/null || status=$?
+  [ $status = 2 ] || fail "$bad: exit $status, not 2"
+  [ ! -e "$work/bad" ] || fail "$bad: $work/bad was left"
+done
+status=0
+"$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 no-such-reading 2> /dev/null || status=$?
+[ $status = 2 ] || fail "an unknown reading: exit $status, not 2"
+echo "certification pipeline: all checks passed"
