@@ -4,7 +4,7 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N]
+//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] [--trace-limit N]
 //   experiment_priority_loops --list-readings     (the 36 readings' names, one a line)
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
@@ -31,9 +31,13 @@
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
 // A run still going after 16 cycles is traced for 4 cycles, then 16, 32, 64
-// and so on up to MAX_CYCLES, until the checker certifies a loop: the order is
+// and so on, until the checker certifies a loop or the run ends: the order is
 // fixed, so a loop certified early is the run's loop at any limit. The ladder
-// starts on 16 when that certified the reading's last loop.
+// starts on 16 when that certified the reading's last loop. A run still going
+// at MAX_CYCLES is counted there, and traced on, up to the trace limit
+// (--trace-limit N; 8 MAX_CYCLES by default), for a loop that closes later; one
+// that ends after MAX_CYCLES, or is still going at the trace limit with no
+// state repeated, is counted apart ("at the limit, not certified").
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -55,7 +59,8 @@ namespace ES = CGAL::Edge_swapping_3;
 namespace {
 
 const char* const usage =
-  "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N]\n";
+  "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] "
+  "[--trace-limit N]\n";
 
 /// The checker refused a trace: the run stops.
 struct Refused
@@ -69,11 +74,11 @@ int run(int argc, char** argv)
     for(const ES::Helper_reading& reading : ES::all_helper_readings()) std::cout << ES::helper_reading_name(reading) << '\n';
     return 0;
   }
-  std::size_t shard = 0, shards = 1, hold_limit = 1000000;
+  std::size_t shard = 0, shards = 1, hold_limit = 1000000, trace_limit = 0;
   for(int k = 1; k < argc;)
   {
     const std::string option = argv[k];
-    if(option != "--shard" && option != "--hold")
+    if(option != "--shard" && option != "--hold" && option != "--trace-limit")
     {
       ++k;
       continue;
@@ -84,6 +89,8 @@ int run(int argc, char** argv)
     {
       if(ok && option == "--hold")
         hold_limit = std::stoul(value);
+      else if(ok && option == "--trace-limit")
+        trace_limit = std::stoul(value);
       else if(ok)
       {
         const auto slash = value.find('/');
@@ -123,7 +130,17 @@ int run(int argc, char** argv)
   }
   catch(const std::exception&)
   {
-    std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST and MAX_CYCLES a number\n";
+    max_cycles = 0;
+  }
+  if(max_cycles == 0 || first_seed > last_seed)
+  {
+    std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST and MAX_CYCLES a positive number\n";
+    return 2;
+  }
+  if(trace_limit == 0) trace_limit = 8 * max_cycles;
+  if(trace_limit < max_cycles)
+  {
+    std::cerr << "experiment_priority_loops: --trace-limit N, with N at least MAX_CYCLES (" << max_cycles << ")\n";
     return 2;
   }
   std::vector<ES::Helper_reading> readings(1);
@@ -206,14 +223,16 @@ int run(int argc, char** argv)
   c.start = ES::GIVEN_CELLS_START;
   const std::string save_dir = argc == 6 ? argv[5] : "";
   const std::size_t early_cycles = 16;
-  std::vector<std::size_t> rungs{4, early_cycles}; // of the trace ladder below
-  for(std::size_t cycles = 2 * early_cycles; cycles < max_cycles; cycles *= 2) rungs.push_back(cycles);
-  rungs.push_back(max_cycles);
+  std::vector<std::size_t> rungs; // of the trace ladder below: 4, 16, 32, 64, ..., the trace limit
+  for(std::size_t cycles = 4; cycles < trace_limit; cycles = cycles == 4 ? early_cycles : 2 * cycles)
+    rungs.push_back(cycles);
+  rungs.push_back(trace_limit);
   for(const ES::Helper_reading& reading : readings)
   {
     c.reading = reading;
     std::cout << "reading " << ES::helper_reading_name(c.reading) << '\n';
     std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
+    std::size_t ended_later = 0, stuck_later = 0, unsettled = 0; // of the runs at the limit
     bool saved = false;
     std::size_t first_rung = 0; // of the ladder below
     std::vector<std::size_t> certified_on(rungs.size()); // loops certified on each rung
@@ -234,20 +253,22 @@ int run(int argc, char** argv)
         // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
         std::stringstream trace;
         trace_checker::Result r;
-        if(o.ending == ES::CYCLE_LIMIT_REACHED && c.max_cycles < max_cycles)
+        if(o.ending == ES::CYCLE_LIMIT_REACHED)
         {
-          // Traced for 4 cycles, then 16, 32, 64 and so on up to MAX_CYCLES, until a loop is
-          // certified: a trace at most twice the length needed, and the failed ones shorter together.
-          // The runs of a reading tend to close their loops alike, so the ladder starts on 16
-          // when that certified the last loop (a loop certified on a rung is certified on the next).
+          // Traced for 4 cycles, then 16, 32, 64 and so on, until a loop is certified or the run
+          // ends: a trace at most twice the length needed, and the failed ones shorter together.
+          // Past MAX_CYCLES (to the trace limit) only to certify a loop that closes later: the
+          // order is fixed, so the loop is the run's at any limit. The runs of a reading tend to
+          // close their loops alike, so the ladder starts on 16 when that certified the last loop.
           for(std::size_t k = first_rung; k < rungs.size(); ++k)
           {
             c.max_cycles = rungs[k];
             trace.str("");
             trace.clear(); // a check read it to its end
             o = ES::trace_conjecture_case(c, trace);
-            if(o.equal_to_cgal) break;
+            if(o.ending != ES::CYCLE_LIMIT_REACHED && o.cycles <= max_cycles && o.equal_to_cgal) return;
             r = trace_checker::check_trace(trace);
+            if(!r.ok || o.ending != ES::CYCLE_LIMIT_REACHED) break; // refused, or ended (CGAL's or stuck)
             if(r.ok && r.loop_certified)
             {
               ++certified_on[k];
@@ -255,20 +276,28 @@ int run(int argc, char** argv)
               break;
             }
           }
-          if(o.equal_to_cgal) return;
         }
         else
         {
           ES::trace_conjecture_case(c, trace);
           r = trace_checker::check_trace(trace);
         }
-        (o.ending == ES::CYCLE_LIMIT_REACHED ? limit : stuck) += 1;
-        if(first < 0) first = (long long)t;
         if(!r.ok)
         {
           std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
           throw Refused();
         }
+        if(first < 0) first = (long long)t;
+        if(o.ending != ES::CYCLE_LIMIT_REACHED && o.cycles <= max_cycles)
+        {
+          ++stuck;
+          return;
+        }
+        ++limit;
+        if(o.ending != ES::CYCLE_LIMIT_REACHED) // ended after MAX_CYCLES
+          ++(o.equal_to_cgal ? ended_later : stuck_later);
+        else if(!r.loop_certified)
+          ++unsettled;
         certified += r.loop_certified;
         if(r.loop_certified && !saved && !save_dir.empty())
         {
@@ -291,12 +320,13 @@ int run(int argc, char** argv)
       std::cout << "seed " << seed << ": " << limit << " starts still swapping at cycle " << max_cycles << " ("
                 << certified << " loops certified), " << stuck << " stuck (first: triangulation " << first << ")\n";
     }
-    if(max_cycles > early_cycles) // the ladder was used
-    {
-      std::cout << "loops certified by cycles traced:";
-      for(std::size_t k = 0; k < rungs.size(); ++k)
-        std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
-    }
+    std::cout << "loops certified by cycles traced:";
+    for(std::size_t k = 0; k < rungs.size(); ++k)
+      std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
+    // The runs at the limit that are not certified loops: what became of them by the trace limit.
+    std::cout << "at the limit, not certified: " << ended_later << " ended after cycle " << max_cycles
+              << " on CGAL's triangulation, " << stuck_later << " ended stuck after it, " << unsettled
+              << " still swapping at cycle " << trace_limit << " with no state repeated\n";
     std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
               << " loops certified by the checker), " << all_stuck << " stuck\n";
   }

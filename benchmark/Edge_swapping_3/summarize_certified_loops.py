@@ -3,11 +3,14 @@
 # Reads the output directories of certify_fixed_order_loops.sh (one file per
 # reading, and progress.txt) and prints a Markdown table: per reading, the
 # runs, those still swapping at the cycle limit, the loops the checker
-# certified among them, those stuck, and the seconds the reading took. The
+# certified among them, those of them that ended later (traced past the limit:
+# on CGAL's triangulation or stuck) or were still going at the trace limit with
+# no state repeated, those stuck, and the seconds the reading took. The
 # directories may be of different point sets (one per set of a family) or
 # shards (--shard I/N) of one: a reading's counts are summed over them.
 # Readings not complete in every directory are listed as missing. Exit 1 if a
-# run at the limit was not certified, so that no such claim goes unnoticed.
+# run at the limit was neither certified a loop nor seen to end, so that no
+# such claim goes unnoticed.
 #
 #   summarize_certified_loops.py OUTDIR [OUTDIR ...]
 
@@ -18,6 +21,8 @@ import subprocess
 import sys
 
 LINE = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
+LATER = re.compile(r"^at the limit, not certified: (\d+) ended after cycle \d+ on CGAL's triangulation, "
+                   r"(\d+) ended stuck after it, (\d+) still swapping at cycle \d+ with no state repeated$")
 TIME = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, ")
 
 
@@ -42,13 +47,19 @@ def main(dirs):
                 continue
             reading = name[:-4]
             with open(os.path.join(d, name)) as f:
-                found = [LINE.match(line.strip()) for line in f]
-            found = [m for m in found if m]
+                lines = [line.strip() for line in f]
+            found = [m for m in map(LINE.match, lines) if m]
             if not found:
                 continue
-            row = totals.setdefault(reading, [0, 0, 0, 0])
-            for k in range(4):
-                row[k] += int(found[-1].group(k + 1))
+            runs, limit, certified, stuck = (int(found[-1].group(k + 1)) for k in range(4))
+            # Files from before the trace limit (stop 35) have no such line: their runs
+            # at the limit that are not certified are counted as not settled.
+            later = [m for m in map(LATER.match, lines) if m]
+            ended, stuck_later, going = ((int(later[-1].group(k + 1)) for k in range(3)) if later
+                                         else (0, 0, limit - certified))
+            row = totals.setdefault(reading, [0] * 6)
+            for k, value in enumerate((runs, limit, certified, ended + stuck_later, going, stuck)):
+                row[k] += value
             complete[reading] += 1
         progress = os.path.join(d, "progress.txt")
         if os.path.exists(progress):
@@ -57,16 +68,18 @@ def main(dirs):
                     m = TIME.match(line.strip())
                     if m:
                         seconds[m.group(1)] += int(m.group(2))
-    print("| reading | runs | still swapping at cycle 200 | loops certified | stuck | seconds |")
-    print("|---|---:|---:|---:|---:|---:|")
+    print("| reading | runs | still swapping at cycle 200 | loops certified | ended later | not settled | stuck "
+          "| seconds |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|")
     uncertified = 0
     order = {r: k for k, r in enumerate(all_readings())}
     for reading in sorted(totals, key=lambda r: (order.get(r, len(order)), r)):
         if complete[reading] != len(dirs):
             continue
-        runs, limit, certified, stuck = totals[reading]
-        uncertified += limit - certified
-        print(f"| `{reading}` | {runs:,} | {limit:,} | {certified:,} | {stuck:,} | {seconds[reading]:,} |")
+        runs, limit, certified, ended, going, stuck = totals[reading]
+        uncertified += limit - certified - ended
+        print(f"| `{reading}` | {runs:,} | {limit:,} | {certified:,} | {ended:,} | {going:,} | {stuck:,} | "
+              f"{seconds[reading]:,} |")
     done = [r for r in totals if complete[r] == len(dirs)]
     print()
     print(f"readings complete: {len(done)}; {sum(totals[r][0] for r in done):,} runs, "
