@@ -35,7 +35,7 @@
 // fixed, so a loop certified early is the run's loop at any limit. The ladder
 // starts on 16 when that certified the reading's last loop. A run still going
 // at MAX_CYCLES is counted there, and traced on, up to the trace limit
-// (--trace-limit N; 8 MAX_CYCLES by default), for a loop that closes later; one
+// (--trace-limit N; 8 MAX_CYCLES when N is 0 or not given), for a loop that closes later; one
 // that ends after MAX_CYCLES, or is still going at the trace limit with no
 // state repeated, is counted apart ("at the limit, not certified").
 
@@ -137,7 +137,7 @@ int run(int argc, char** argv)
     std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST and MAX_CYCLES a positive number\n";
     return 2;
   }
-  if(trace_limit == 0) trace_limit = 8 * max_cycles;
+  if(trace_limit == 0) trace_limit = max_cycles > std::size_t(-1) / 8 ? max_cycles : 8 * max_cycles;
   if(trace_limit < max_cycles)
   {
     std::cerr << "experiment_priority_loops: --trace-limit N, with N at least MAX_CYCLES (" << max_cycles << ")\n";
