@@ -27,9 +27,12 @@ import sys
 import tempfile
 
 
+class BadInput(Exception):
+    """Input that cannot make a case: the message names the file and the problem."""
+
+
 def fail(message):
-    sys.stderr.write("stalled_region_case.py: " + message + "\n")
-    sys.exit(2)
+    raise BadInput(message)
 
 
 def read_table(path, width):
@@ -73,15 +76,8 @@ def centroid(exact, cell):
     return [sum(exact[v][k] for v in cell) / 4 for k in range(3)]
 
 
-def main(argv):
-    if len(argv) < 4 or len(argv) > 6:
-        fail("usage: stalled_region_case.py NODE ELE OUT.json [SEED [MAX_CYCLES]]")
-    node, ele, out = argv[1:4]
-    try:
-        seed = int(argv[4]) if len(argv) > 4 else 1
-        max_cycles = int(argv[5]) if len(argv) > 5 else 20000
-    except ValueError:
-        fail("SEED and MAX_CYCLES are whole numbers")
+def read_region(node, ele):
+    """The points (floats) and cells (point indices) of a TetGen .node and .ele pair, checked."""
     # repr of a float read from the file is the same double: the points go out exactly.
     try:
         points = [[float(x) for x in row] for row in read_table(node, 3)]
@@ -94,13 +90,19 @@ def main(argv):
         fail(f"{node}: two points are the same")
     if any(v < 0 or v >= len(points) for cell in cells for v in cell):
         fail(f"{ele}: a vertex index out of range (the node file has {len(points)} points, numbered from 0)")
+    return points, cells
+
+
+def fill_hull(points, cells):
+    """The cells of the rest of the points' hull, filled by TetGen around the region `cells`
+    with no new point, and a line that says what was done."""
     # The region's boundary: the triangles of exactly one of its cells.
     faces = collections.Counter(tuple(sorted(c[:k] + c[k + 1:])) for c in cells for k in range(4))
     if max(faces.values()) > 2:
-        fail(f"{ele}: a triangle in more than two cells")
+        fail("a triangle in more than two cells of the region")
     boundary = [f for f, n in faces.items() if n == 1]
     if not boundary:
-        fail(f"{ele}: the region has no boundary")
+        fail("the region has no boundary")
     with tempfile.TemporaryDirectory() as work:
         stem = os.path.join(work, "region")
         with open(stem + ".node", "w") as f:
@@ -131,14 +133,45 @@ def main(argv):
     filling = {part for part, cell in first_of_part.items()
                if not any(inside(centroid(exact, cell), [exact[v] for v in c]) for c in cells)}
     outside = [cell for cell, part in tetgen_cells if part in filling]
-    case = {"points": points, "cells": cells + outside, "start": "cells", "strategy": "helper", "order": "random",
-            "seed": seed, "max_cycles": max_cycles}
+    return outside, (f"{len(points)} points, {len(cells)} cells of the region and {len(outside)} filling the rest "
+                     f"of the hull ({len(filling)} of TetGen's {len(first_of_part)} parts); {len(boundary)} boundary "
+                     f"triangles kept")
+
+
+def region_case(points, cells, seed, max_cycles):
+    """The case (a dict, as the laboratory's case files) and the line that says what was done."""
+    outside, said = fill_hull(points, cells)
+    return {"points": points, "cells": cells + outside, "start": "cells", "strategy": "helper", "order": "random",
+            "seed": seed, "max_cycles": max_cycles}, said
+
+
+def write_case(case, out):
     with open(out, "w") as f:
         json.dump(case, f)
         f.write("\n")
-    print(f"{out}: {len(points)} points, {len(cells)} cells of the region and {len(outside)} filling the rest "
-          f"of the hull ({len(filling)} of TetGen's {len(first_of_part)} parts); {len(boundary)} boundary triangles kept")
+
+
+def main(argv):
+    if len(argv) < 4 or len(argv) > 6:
+        fail("usage: stalled_region_case.py NODE ELE OUT.json [SEED [MAX_CYCLES]]")
+    node, ele, out = argv[1:4]
+    try:
+        seed = int(argv[4]) if len(argv) > 4 else 1
+        max_cycles = int(argv[5]) if len(argv) > 5 else 20000
+    except ValueError:
+        fail("SEED and MAX_CYCLES are whole numbers")
+    points, cells = read_region(node, ele)
+    try:
+        case, said = region_case(points, cells, seed, max_cycles)
+    except BadInput as e:
+        fail(f"{ele}: {e}")
+    write_case(case, out)
+    print(f"{out}: {said}")
 
 
 if __name__ == "__main__":
-    main(sys.argv)
+    try:
+        main(sys.argv)
+    except BadInput as e:
+        sys.stderr.write(f"stalled_region_case.py: {e}\n")
+        sys.exit(2)

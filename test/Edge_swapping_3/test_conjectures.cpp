@@ -944,6 +944,43 @@ TEST_CASE("edge_swap optimize --trace: the helper and plain swapping on the work
                             what, {"p.node", "out.ele", "out.node", "t.jsonl"});
 }
 
+TEST_CASE("The 25-point trap shrunk from the stalled region of the 10^6 run: random orders still going, fixed orders loop",
+          "[conjectures][traces]")
+{
+  // benchmark/Edge_swapping_3/shrink_stalled_region.py: 7 cells of the region, the rest of their
+  // hull filled by TetGen (93 cells). In random order 1,000 of 1,000 seeds were going at cycle
+  // 2,000 (conjectures.md, "Escape times"); here 3 seeds to cycle 200, every visit confirmed
+  // by the independent checker. A random order certifies no loop; a fixed one does.
+  auto c = load_case("helper_random_order_trap_25_points.json");
+  REQUIRE(c.points.size() == 25);
+  REQUIRE(c.cells.size() == 93);
+  REQUIRE(c.order == ES::RANDOM_ORDER);
+  REQUIRE(c.max_cycles == 200);
+  for(unsigned seed : {1u, 2u, 3u})
+  {
+    INFO("random order, seed " << seed);
+    c.seed = seed;
+    std::ostringstream trace;
+    const auto o = ES::trace_conjecture_case(c, trace);
+    REQUIRE(o.ending == ES::CYCLE_LIMIT_REACHED);
+    REQUIRE(o.swaps[ES::FLIP_2_3] > 0);
+    const auto r = check_text(trace.str());
+    INFO(r.error);
+    REQUIRE(r.ok);
+    REQUIRE(r.end == "cycle limit reached");
+    REQUIRE_FALSE(r.loop_certified);
+  }
+  c.order = ES::PRIORITY_ORDER;
+  c.seed = 1;
+  std::ostringstream trace;
+  REQUIRE(ES::trace_conjecture_case(c, trace).ending == ES::CYCLE_LIMIT_REACHED);
+  const auto r = check_text(trace.str());
+  REQUIRE(r.ok);
+  REQUIRE(r.loop_certified);
+  REQUIRE(r.loop_from == 1);
+  REQUIRE(r.loop_to == 3);
+}
+
 TEST_CASE("Loops of the helper strategy under a fixed face order, 8 and 6 points, certified by the independent checker",
           "[conjectures][traces]")
 {
