@@ -11,8 +11,11 @@
 # for settled starts), and those from which an end that is not Delaunay can
 # be reached.
 #
-#   adversarial_orders.sh [SIZES [READING [SETS]]]
+#   adversarial_orders.sh [SIZES [READING [SETS [SEARCH [MAX_STATES]]]]]
 #
+# SEARCH "effective" runs the search over changing visits (--effective:
+# next-cycle readings only; the same answers, much faster from 7 points on);
+# MAX_STATES (default 20000) bounds the states per start.
 # Defaults: sizes "5 6", all 36 readings ("next-cycle" or "same-cycle" for
 # 18 of them), sets 1-40 (3 minutes on one core). At 7 points a start takes
 # about 0.2 s under the package's reading (`adversarial_orders.sh 7
@@ -24,9 +27,16 @@ cd "$(dirname "$0")/../.."
 sizes=${1:-5 6}
 reading=${2:-all}
 sets=${3:-$(seq 1 40)}
+search=()
+case ${4:-full} in
+  full) ;;
+  effective) search=(--effective) ;;
+  *) echo "adversarial_orders.sh: SEARCH is full or effective" >&2; exit 2 ;;
+esac
+max_states=${5:-20000}
 for n in $sizes; do
   for set in $sets; do
-    ./build/bin/experiment_adversarial_orders random-integer:$n:$set "$reading" 20000 |
+    ./build/bin/experiment_adversarial_orders "${search[@]}" random-integer:$n:$set "$reading" "$max_states" |
       awk -v n=$n -v set=$set '/^reading/{print n, set, $0}'
   done
 done | while IFS= read -r line; do # each line to standard error too, through its descriptor

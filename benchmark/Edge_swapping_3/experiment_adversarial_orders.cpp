@@ -6,12 +6,13 @@
 // readings, the order of the cycle's sweep through all vertex triples). Is
 // there a choice of orders under which the helper strategy never ends?
 //
-//   experiment_adversarial_orders [--reduce] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
-// experiment_priority_loops); READING a reading of Algorithm 4, or "next-cycle"
-// or "same-cycle" for the 18 readings with that visit of made facets, or
-// "all" for the 36.
+// experiment_priority_loops), whose every TOPCOM triangulation is a start, or
+// a case file (.json, start "cells"), whose cells are the one start; READING
+// a reading of Algorithm 4, or "next-cycle" or "same-cycle" for the 18
+// readings with that visit of made facets, or "all" for the 36.
 //
 // The search is test/Edge_swapping_3/adversarial_search.h. A start is
 // "settled" when its whole graph was searched within MAX_STATES states: then
@@ -22,12 +23,20 @@
 // from one it makes only by neighbouring visits that commute (a partial-order
 // reduction, described in adversarial_search.h: the answers are the same,
 // the orders kept may differ; at 7 points it is slower than the full search).
+// With --effective the search is test/Edge_swapping_3/effective_visit_search.h,
+// which branches only on the visits that change the state (with the
+// reduction): the same answers, for next-cycle readings, on starts of more
+// than 9 points; it prints the states from which an end can be reached, and
+// one line of progress to standard error for each of the first 10 states,
+// then every 1,000.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
+#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "adversarial_search.h"
+#include "effective_visit_search.h"
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -41,19 +50,21 @@ using adversarial_search::Loop_found;
 
 int main(int argc, char** argv)
 {
-  const bool reduce = argc > 1 && std::string(argv[1]) == "--reduce";
-  if(reduce)
+  const std::string flag = argc > 1 ? argv[1] : "";
+  const bool reduce = flag == "--reduce", effective = flag == "--effective";
+  if(reduce || effective)
   {
     --argc;
     ++argv;
   }
   if(argc != 4 && argc != 5)
   {
-    std::cerr << "usage: experiment_adversarial_orders [--reduce] SOURCE READING MAX_STATES [TRACE]\n";
+    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]\n";
     return 2;
   }
   const std::string source = argv[1];
   std::vector<K::Point_3> points;
+  std::vector<std::vector<std::array<std::size_t, 4>>> starts;
   std::vector<std::string> part(1);
   for(char ch : source)
     if(ch == ':') part.emplace_back();
@@ -62,9 +73,24 @@ int main(int argc, char** argv)
     points = ES::point_families::random_integer<K::Point_3>(std::stoul(part[1]), unsigned(std::stoul(part[2])));
   else if(part[0] == "family" && part.size() == 4)
     points = ES::make_point_family<K::Point_3>(part[1], std::stoul(part[2]), unsigned(std::stoul(part[3])));
+  else if(source.size() > 5 && source.compare(source.size() - 5, 5, ".json") == 0)
+  {
+    try
+    {
+      const ES::Conjecture_case<K::Point_3> c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
+      if(c.start != ES::GIVEN_CELLS_START) throw std::runtime_error("its start is not \"cells\"");
+      points = c.points;
+      starts.push_back(c.cells);
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "experiment_adversarial_orders: " << source << ": " << e.what() << '\n';
+      return 2;
+    }
+  }
   else
   {
-    std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET or family:NAME:N:SEED\n";
+    std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET, family:NAME:N:SEED or a case file (.json)\n";
     return 2;
   }
   std::vector<ES::Helper_reading> readings;
@@ -84,9 +110,16 @@ int main(int argc, char** argv)
       return 2;
     }
   }
+  if(effective)
+    for(const auto& r : readings)
+      if(r.made_facets != ES::MADE_FACETS_NEXT_CYCLE)
+      {
+        std::cerr << "experiment_adversarial_orders: --effective searches next-cycle readings only\n";
+        return 2;
+      }
   const std::size_t max_states = std::stoul(argv[3]);
-  const auto all = ES::IO::topcom_triangulations(points, 1000000);
-  std::cout << points.size() << " points, " << all.triangulations.size() << " triangulations\n";
+  if(starts.empty()) starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
+  std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " triangulations\n");
   nlohmann::json header{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
                         {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0},
                         {"max_rounds", 1000000}};
@@ -100,13 +133,31 @@ int main(int argc, char** argv)
     header["reading"] = ES::helper_reading_name(reading);
     std::size_t settled = 0, loops = 0, states = 0, fewest = std::numeric_limits<std::size_t>::max(), fewest_cycles = 0;
     std::size_t surely = 0, off_delaunay = 0;
-    for(std::size_t t = 0; t < all.triangulations.size(); ++t)
+    for(std::size_t t = 0; t < starts.size(); ++t)
     {
       nlohmann::json h = header;
       nlohmann::json cells = nlohmann::json::array();
-      for(const auto& c : all.triangulations[t]) cells.push_back({c[0], c[1], c[2], c[3]});
+      for(const auto& c : starts[t]) cells.push_back({c[0], c[1], c[2], c[3]});
       h["cells"] = cells;
-      const Loop_found r = adversarial_search::search(h, max_states, reduce);
+      Loop_found r;
+      if(effective)
+      {
+        const auto progress = [&](std::size_t done, std::size_t found, std::size_t nodes) {
+          if(done <= 10 || done % 1000 == 0)
+            std::cerr << "start " << t << ": " << done << " of " << found << " states searched, " << nodes << " nodes\n";
+        };
+        const effective_visit_search::Closure c = effective_visit_search::search(h, max_states, true, 0, progress);
+        r = c;
+        std::cout << "start " << t << ": " << c.states << " states" << (c.settled ? "" : " (not settled)") << ", "
+                  << c.transitions << " cycles between them, " << c.nodes << " nodes; " << c.states_that_can_end
+                  << " can end the run in one cycle";
+        if(c.settled) std::cout << ", " << c.states_reaching_end << " can reach an end";
+        if(c.loop) std::cout << "; a loop of " << c.loop_swaps << " swaps in " << c.loop_cycles << " cycles"
+                             << (c.fewest_swaps_searched ? " (the fewest)" : "");
+        std::cout << std::endl;
+      }
+      else
+        r = adversarial_search::search(h, max_states, reduce);
       settled += r.settled;
       states += r.states;
       surely += r.ends_with_probability_one;
@@ -132,7 +183,7 @@ int main(int argc, char** argv)
         best_trace = r.trace;
       }
     }
-    std::cout << "reading " << ES::helper_reading_name(reading) << ": " << all.triangulations.size() << " starts, "
+    std::cout << "reading " << ES::helper_reading_name(reading) << ": " << starts.size() << " starts, "
               << settled << " settled, " << loops << " with a certified loop";
     if(loops > 0) std::cout << " (fewest swaps " << fewest << ", in " << fewest_cycles << " cycles)";
     std::cout << ", " << states << " states; random orders end with probability one from " << surely

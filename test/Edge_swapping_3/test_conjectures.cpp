@@ -8,6 +8,7 @@
 #include "program_runner.h"
 #include "trace_checker.h"
 #include "adversarial_search.h"
+#include "effective_visit_search.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
@@ -1236,6 +1237,56 @@ TEST_CASE("Adversarial orders: the partial-order reduction reaches the same stat
   REQUIRE(loops > 0);
   WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << full_nodes
                 << " in full, " << reduced_nodes << " reduced");
+}
+
+TEST_CASE("Adversarial orders: the effective-visit search reaches the same states, loops and answers as the adversarial search",
+          "[conjectures][traces]")
+{
+  // Six points, sets 1 to 4, the 18 next-cycle readings; seven points, sets
+  // 1 and 2, the package's reading, every start.
+  std::size_t compared = 0, loops = 0, nodes = 0, effective_nodes = 0;
+  for(const auto& [n, sets] : {std::pair<std::size_t, unsigned>{6, 4}, {7, 2}})
+    for(unsigned set = 1; set <= sets; ++set)
+    {
+      const auto points = ES::point_families::random_integer<Point>(n, set);
+      const auto starts = ES::IO::topcom_triangulations(points, 1000).triangulations;
+      for(const auto& reading : ES::all_helper_readings())
+      {
+        if(reading.made_facets != ES::MADE_FACETS_NEXT_CYCLE) continue;
+        if(n == 7 && ES::helper_reading_name(reading) != ES::helper_reading_name(ES::Helper_reading())) continue;
+        for(const auto& cells : starts)
+        {
+          INFO(n << " points, set " << set << ", " << ES::helper_reading_name(reading));
+          const auto h = adversarial_header(points, cells, reading);
+          const auto all_orders = adversarial_search::search(h, 20000, n == 6 ? false : true);
+          const auto changing = effective_visit_search::search(h, 20000);
+          REQUIRE(all_orders.settled);
+          REQUIRE(changing.settled);
+          REQUIRE(changing.states == all_orders.states);
+          REQUIRE(changing.loop == all_orders.loop);
+          REQUIRE(changing.loop_swaps == all_orders.loop_swaps);
+          REQUIRE(changing.fewest_swaps_searched);
+          REQUIRE(changing.ends_with_probability_one == all_orders.ends_with_probability_one);
+          if(changing.ends_with_probability_one) REQUIRE(changing.states_reaching_end == changing.states);
+          REQUIRE(changing.can_end_off_delaunay == all_orders.can_end_off_delaunay);
+          nodes += all_orders.nodes;
+          effective_nodes += changing.nodes;
+          if(changing.loop)
+          {
+            const auto check = check_text(changing.trace);
+            INFO(check.error);
+            REQUIRE(check.ok);
+            REQUIRE(check.loop_certified);
+            ++loops;
+          }
+          ++compared;
+        }
+      }
+    }
+  REQUIRE(compared >= 4 * 18 * 2);
+  REQUIRE(loops > 0);
+  WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << nodes
+                << " over every order, " << effective_nodes << " over the changing visits");
 }
 
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",

@@ -1,0 +1,699 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The adversarial order class of adversarial_search.h on starts too large for
+// it (more than 9 points), for the readings that visit made facets in the next
+// cycle. The question is the same: every state (cells and tags) at a cycle's
+// end that some sequence of orders reaches, and from each whether a cycle can
+// end the run. Settled, it decides the uniformly random class too: a uniform
+// random order gives every order a positive chance each cycle, so random
+// orders end the run with probability one exactly when an end stays reachable
+// from every state reached.
+//
+// What makes larger starts searchable: the search branches only on the visits
+// that change the state (a swap or a new tag). A visit that changes nothing
+// (an inert visit: the facet is passed over, or its decision neither swaps nor
+// tags) or the pass of a listed facet that is not there leaves the state as it
+// is; it only uses up that facet's turn. So an order of a cycle is its
+// sequence of changing visits e1 ... ek, each of a listed facet not visited
+// before, plus for every other listed facet a moment (before e1, between two,
+// or after ek) at which it is not there or its visit is inert. Conversely any
+// such sequence is an order: put each other facet at such a moment. A node of
+// a cycle's search is (cells, tags, the listed facets not visited yet, those
+// of them that have had no such moment yet, busy); the cycle may end at a node
+// where the last set is empty. The ends, and the fewest swaps of each, are the
+// same as when every order of the listed facets is tried, as
+// adversarial_search.h does; the test "The effective-visit search agrees with
+// the adversarial search" compares them start by start on 6 and 7 points.
+//
+// With `reduce`, the partial-order reduction of adversarial_search.h: after a
+// changing visit h from node n, a facet g listed before h is not visited next
+// when g then h and h then g, from n, both change the state at each step and
+// end in the same node with the same swaps.
+//
+// Cells and facets are numbered as they are met, in sets of W 64-bit words;
+// a start that meets more than 64 W of either is searched again with 2 W.
+// The rule is the checker's model (`Checker::decide` and `apply`): each
+// decision is computed on the whole state once and kept by what it depends
+// on (the facet, its two apexes, which cells of the five points are there and
+// tagged), except the planar configurations (2-2 and 4-4), which look beyond
+// the five points and are computed anew each time.
+
+#ifndef EDGE_SWAPPING_3_TEST_EFFECTIVE_VISIT_SEARCH_H
+#define EDGE_SWAPPING_3_TEST_EFFECTIVE_VISIT_SEARCH_H
+
+#include "adversarial_search.h"
+#include <functional>
+
+namespace effective_visit_search {
+
+using adversarial_search::Loop_found;
+using adversarial_search::Search_limit_reached;
+using trace_checker::Cell;
+using trace_checker::Checker;
+using trace_checker::Facet;
+
+/// More cells or facets met than a set of W words holds.
+struct Too_many_numbers
+{
+};
+
+template <int W>
+struct Bits
+{
+  std::array<std::uint64_t, W> w{};
+
+  void set(int k) { w[std::size_t(k >> 6)] |= std::uint64_t(1) << (k & 63); }
+  void reset(int k) { w[std::size_t(k >> 6)] &= ~(std::uint64_t(1) << (k & 63)); }
+  bool test(int k) const { return (w[std::size_t(k >> 6)] >> (k & 63)) & 1; }
+  bool empty() const
+  {
+    for(std::uint64_t x : w)
+      if(x != 0) return false;
+    return true;
+  }
+  Bits minus(const Bits& o) const
+  {
+    Bits r;
+    for(int i = 0; i < W; ++i) r.w[std::size_t(i)] = w[std::size_t(i)] & ~o.w[std::size_t(i)];
+    return r;
+  }
+  Bits intersection(const Bits& o) const
+  {
+    Bits r;
+    for(int i = 0; i < W; ++i) r.w[std::size_t(i)] = w[std::size_t(i)] & o.w[std::size_t(i)];
+    return r;
+  }
+  bool operator==(const Bits& o) const { return w == o.w; }
+  bool operator<(const Bits& o) const { return w < o.w; }
+  std::uint64_t hash() const
+  {
+    std::uint64_t h = 0x632BE59BD9B4E019ull;
+    for(std::uint64_t x : w) h = (h ^ x) * 0x9E3779B97F4A7C15ull + (h >> 29);
+    return h;
+  }
+  template <class F>
+  void for_each(F f) const
+  {
+    for(int i = 0; i < W; ++i)
+      for(std::uint64_t b = w[std::size_t(i)]; b != 0; b &= b - 1) f(64 * i + __builtin_ctzll(b));
+  }
+};
+
+/// The cells and facets met so far, numbered, and the visits decided so far.
+template <int W>
+class Space
+{
+public:
+  typedef Bits<W> Set;
+
+  explicit Space(const nlohmann::json& header) : model_(header)
+  {
+    std::string reading = header.at("reading").get<std::string>();
+    if(reading.find("same-cycle") != std::string::npos)
+      throw std::invalid_argument("effective-visit search: next-cycle readings only");
+    clear_tags_each_cycle_ = reading.rfind("cleared-each-cycle", 0) == 0;
+    tags_outlive_cells_ = reading.rfind("never-cleared", 0) == 0;
+    if(model_.points().size() > 4096) throw std::invalid_argument("effective-visit search: at most 4096 points");
+  }
+
+  int cell_number(const Cell& t)
+  {
+    const auto [it, added] = cell_number_.emplace(pack(t), int(cells_.size()));
+    if(added)
+    {
+      if(cells_.size() >= std::size_t(64 * W)) throw Too_many_numbers();
+      cells_.push_back(t);
+      std::array<int, 4> facets;
+      for(int skip = 0; skip < 4; ++skip)
+      {
+        Facet f;
+        int m = 0;
+        for(int k = 0; k < 4; ++k)
+          if(k != skip) f[std::size_t(m++)] = t[std::size_t(k)];
+        const int n = facet_number(f);
+        facets[std::size_t(skip)] = n;
+        facet_cells_[std::size_t(n)].push_back(it->second);
+      }
+      cell_facets_.push_back(facets);
+    }
+    return it->second;
+  }
+  int facet_number(const Facet& f)
+  {
+    const auto [it, added] = facet_number_.emplace(f, int(facets_.size()));
+    if(added)
+    {
+      if(facets_.size() >= std::size_t(64 * W)) throw Too_many_numbers();
+      facets_.push_back(f);
+      facet_cells_.emplace_back();
+      facet_points_.push_back(point_bit(f[0]) | point_bit(f[1]) | point_bit(f[2]));
+    }
+    return it->second;
+  }
+  const Facet& facet(int k) const { return facets_[std::size_t(k)]; }
+
+  Set cell_set(const std::set<Cell>& cells)
+  {
+    Set s;
+    for(const Cell& t : cells) s.set(cell_number(t));
+    return s;
+  }
+  std::set<Cell> cells_of(const Set& s) const
+  {
+    std::set<Cell> out;
+    s.for_each([&](int k) { out.insert(cells_[std::size_t(k)]); });
+    return out;
+  }
+
+  /// The interior facets of the cells: those in two of them.
+  Set interior(const Set& cells) const
+  {
+    Set once, twice;
+    cells.for_each([&](int k) {
+      for(int f : cell_facets_[std::size_t(k)])
+      {
+        if(once.test(f)) twice.set(f);
+        once.set(f);
+      }
+    });
+    return twice;
+  }
+
+  /// The tags at a cycle's start, as the reading says.
+  Set round_start_tags(const Set& tags) const { return clear_tags_each_cycle_ ? Set() : tags; }
+  bool ends_without_swap() const { return model_.ends_without_swap(); }
+
+  bool is_delaunay(const Set& cells)
+  {
+    model_.set_state(cells_of(cells), {});
+    return model_.is_delaunay();
+  }
+
+  struct Visit
+  {
+    Set cells, tags;
+    bool swap = false, changed = false, effective = false;
+    // The points of the cells the visit reads and writes: a facet with fewer
+    // than two of its points among them reads nothing the visit changes.
+    std::uint64_t footprint = 0;
+  };
+
+  /// One visit of facet number `f`: nothing if the facet is not there.
+  Visit visit(const Set& cells, const Set& tags, int f)
+  {
+    Visit v{cells, tags};
+    int holders[2], found = 0;
+    for(int t : facet_cells_[std::size_t(f)])
+      if(cells.test(t))
+      {
+        if(found == 2) throw std::logic_error("a facet in three cells");
+        holders[found++] = t;
+      }
+    if(found < 2) return v;
+    const Facet& facet = facets_[std::size_t(f)];
+    std::size_t d = apex(holders[0], facet), e = apex(holders[1], facet);
+    if(CGAL::compare_xyz(model_.points()[e], model_.points()[d]) == CGAL::SMALLER) std::swap(d, e);
+    // The five points' cells: which are there and tagged.
+    const std::array<std::size_t, 5> five{facet[0], facet[1], facet[2], d, e};
+    std::uint64_t there = 0, tagged = 0;
+    for(int skip = 0; skip < 5; ++skip)
+    {
+      Cell t;
+      int m = 0;
+      for(int k = 0; k < 5; ++k)
+        if(k != skip) t[std::size_t(m++)] = five[std::size_t(k)];
+      std::sort(t.begin(), t.end());
+      const auto it = cell_number_.find(pack(t));
+      if(it != cell_number_.end() && cells.test(it->second))
+      {
+        there |= std::uint64_t(1) << skip;
+        if(tags.test(it->second)) tagged |= std::uint64_t(1) << skip;
+      }
+    }
+    const std::uint64_t key = (std::uint64_t(f) << 34) | (std::uint64_t(d) << 22) | (std::uint64_t(e) << 10) |
+                              (there << 5) | tagged;
+    v.footprint = point_bit(facet[0]) | point_bit(facet[1]) | point_bit(facet[2]) | point_bit(d) | point_bit(e);
+    auto it = decisions_.find(key);
+    if(it == decisions_.end())
+    {
+      Local local = decide(cells, tags, facet, d, e);
+      if(!local.local)
+      {
+        planar_met_ = true; // looks beyond the five points: not kept
+        v.footprint |= points_of(local.old_cells) | points_of(local.new_cells);
+        return apply(v, local);
+      }
+      it = decisions_.emplace(key, std::move(local)).first;
+    }
+    return apply(v, it->second);
+  }
+
+  /// The points of facet number `f`, as bits (all bits with more than 64 points).
+  std::uint64_t facet_points(int f) const { return facet_points_[std::size_t(f)]; }
+  /// Whether the facets a visit may change are known from its footprint:
+  /// not once a planar configuration, which looks beyond its five points, is met.
+  bool footprints_hold() const { return !planar_met_; }
+
+private:
+  static std::uint64_t pack(const Cell& t)
+  {
+    return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 16) | (std::uint64_t(t[2]) << 32) | (std::uint64_t(t[3]) << 48);
+  }
+  std::uint64_t points_of(const std::vector<int>& cells) const
+  {
+    std::uint64_t m = 0;
+    for(int t : cells)
+      for(std::size_t v : cells_[std::size_t(t)]) m |= point_bit(v);
+    return m;
+  }
+  std::uint64_t point_bit(std::size_t v) const
+  {
+    return model_.points().size() > 64 ? ~std::uint64_t(0) : std::uint64_t(1) << v;
+  }
+
+  struct Local
+  {
+    bool swap = false, local = true;
+    std::vector<int> old_cells, new_cells, new_tags;
+  };
+
+  std::size_t apex(int cell, const Facet& f) const
+  {
+    for(std::size_t v : cells_[std::size_t(cell)])
+      if(v != f[0] && v != f[1] && v != f[2]) return v;
+    throw std::logic_error("no apex");
+  }
+
+  // The checker's decision, on the whole state, and its flip carried out by
+  // the checker too (which checks it keeps the volume and makes no flat cell).
+  Local decide(const Set& cells, const Set& tags, const Facet& f, std::size_t d, std::size_t e)
+  {
+    model_.set_state(cells_of(cells), cells_of(tags));
+    const auto apexes = model_.apexes(f);
+    if(apexes.first != d || apexes.second != e) throw std::logic_error("apexes differ from the checker's");
+    const Checker::Decision r = model_.decide(f, d, e);
+    model_.apply(r);
+    Local local;
+    local.swap = r.swap;
+    local.local = r.kind.rfind("planar", 0) != 0;
+    for(const Cell& t : r.old_cells) local.old_cells.push_back(cell_number(t));
+    for(const Cell& t : r.new_cells) local.new_cells.push_back(cell_number(t));
+    for(const Cell& t : r.new_tags) local.new_tags.push_back(cell_number(t));
+    // The sets' arithmetic below must give the checker's state.
+    Visit check{cells, tags};
+    check = apply(check, local);
+    if(cells_of(check.cells) != model_.cells() || cells_of(check.tags) != model_.tags())
+      throw std::logic_error("the visit's state differs from the checker's");
+    return local;
+  }
+
+  Visit apply(Visit v, const Local& r) const
+  {
+    for(int t : r.new_tags) v.tags.set(t);
+    if(r.swap)
+    {
+      for(int t : r.old_cells)
+      {
+        v.cells.reset(t);
+        if(!tags_outlive_cells_) v.tags.reset(t);
+      }
+      for(int t : r.new_cells) v.cells.set(t);
+    }
+    v.swap = r.swap;
+    v.effective = r.swap || !r.new_tags.empty();
+    v.changed = r.swap || (!r.new_tags.empty() && !model_.ends_without_swap());
+    return v;
+  }
+
+  Checker model_;
+  bool clear_tags_each_cycle_ = false, tags_outlive_cells_ = false;
+  std::vector<Cell> cells_;
+  std::vector<Facet> facets_;
+  std::vector<std::array<int, 4>> cell_facets_; // by cell number
+  std::vector<std::vector<int>> facet_cells_;   // by facet number: the cells met that hold it
+  std::vector<std::uint64_t> facet_points_;     // by facet number
+  bool planar_met_ = false;
+  std::unordered_map<std::uint64_t, int> cell_number_; // by pack()
+  std::map<Facet, int> facet_number_;
+  std::unordered_map<std::uint64_t, Local> decisions_;
+};
+
+// Every end of one cycle from a state at its start: the state, whether the
+// cycle was busy, its fewest swaps and one sequence of changing visits that
+// reaches it with them. The memo and the reduction are those of
+// adversarial_search::Cycle_search, on the nodes described above.
+template <int W>
+struct Cycle_search
+{
+  typedef Bits<W> Set;
+  Space<W>& space;
+  std::size_t max_nodes;
+  bool reduce = false;
+  std::size_t nodes = 0;
+  struct Node
+  {
+    Set cells, tags, left, owed; // left: not visited yet; owed: of those, no inert moment yet
+    bool busy;
+    bool operator==(const Node& o) const
+    {
+      return busy == o.busy && cells == o.cells && tags == o.tags && left == o.left && owed == o.owed;
+    }
+  };
+  struct Node_hash
+  {
+    std::size_t operator()(const Node& n) const
+    {
+      return std::size_t(n.cells.hash() ^ (n.tags.hash() * 31) ^ (n.left.hash() * 961) ^ (n.owed.hash() * 29791) ^
+                         std::uint64_t(n.busy));
+    }
+  };
+  struct Searched
+  {
+    std::size_t swaps;
+    Set not_searched;
+  };
+  std::unordered_map<Node, Searched, Node_hash> seen;
+  std::map<std::tuple<Set, Set, bool>, std::pair<std::size_t, std::vector<int>>> ends;
+  bool can_end = false, can_end_off_delaunay = false;
+
+  /// The facets of `among` whose visit changes the state (not there: no).
+  Set changing(const Set& cells, const Set& tags, const Set& among)
+  {
+    Set out;
+    among.for_each([&](int f) {
+      if(space.visit(cells, tags, f).effective) out.set(f);
+    });
+    return out;
+  }
+
+  // A node's sets of facets after a changing visit: `active` holds the facets
+  // of `left` whose visit changes the state. Only facets with two points or
+  // more in the visit's footprint can change from changing to inert or back.
+  struct Step
+  {
+    typename Space<W>::Visit visit;
+    Set left, owed, active;
+  };
+  Step step(const Set& cells, const Set& tags, const Set& left, const Set& owed, const Set& active, int f)
+  {
+    Step s{space.visit(cells, tags, f), left, owed, active};
+    s.left.reset(f);
+    s.owed.reset(f);
+    s.active.reset(f);
+    const bool filter = space.footprints_hold();
+    s.left.for_each([&](int g) {
+      if(filter && __builtin_popcountll(space.facet_points(g) & s.visit.footprint) < 2) return;
+      if(space.visit(s.visit.cells, s.visit.tags, g).effective) s.active.set(g);
+      else s.active.reset(g);
+    });
+    s.owed = s.owed.intersection(s.active); // not there or inert now: its moment
+    return s;
+  }
+
+  /// Whether changing visits g and f, from a node, commute: the same node
+  /// after both in either order, with the same swaps and activity.
+  bool commute(const Set& cells, const Set& tags, const Set& left, const Set& owed, const Set& active, int g, int f)
+  {
+    if(space.footprints_hold())
+    {
+      // Footprints sharing at most two points: neither reads what the other
+      // writes; the node is the same unless a facet owed reads both.
+      const std::uint64_t pf = space.visit(cells, tags, f).footprint, pg = space.visit(cells, tags, g).footprint;
+      if(__builtin_popcountll(pf & pg) <= 2)
+      {
+        bool both = false;
+        owed.for_each([&](int h) {
+          const std::uint64_t ph = space.facet_points(h);
+          both = both || (__builtin_popcountll(ph & pf) >= 2 && __builtin_popcountll(ph & pg) >= 2);
+        });
+        if(!both) return true;
+      }
+    }
+    const Step a1 = step(cells, tags, left, owed, active, g);
+    if(!a1.active.test(f)) return false;
+    const Step a2 = step(a1.visit.cells, a1.visit.tags, a1.left, a1.owed, a1.active, f);
+    const Step b1 = step(cells, tags, left, owed, active, f);
+    if(!b1.active.test(g)) return false;
+    const Step b2 = step(b1.visit.cells, b1.visit.tags, b1.left, b1.owed, b1.active, g);
+    return int(a1.visit.swap) + int(a2.visit.swap) == int(b1.visit.swap) + int(b2.visit.swap) &&
+           (a1.visit.changed || a2.visit.changed) == (b1.visit.changed || b2.visit.changed) &&
+           a2.visit.cells == b2.visit.cells && a2.visit.tags == b2.visit.tags && a2.owed == b2.owed;
+  }
+
+  /// The search from a cycle's start.
+  void run(const Set& cells, const Set& tags, const Set& listed)
+  {
+    const Set active = changing(cells, tags, listed);
+    std::vector<int> order;
+    run(cells, tags, listed, active, active, false, 0, order, Set());
+  }
+
+  void run(const Set& cells, const Set& tags, const Set& left, const Set& owed, const Set& active, bool busy,
+           std::size_t swaps, std::vector<int>& order, const Set& not_next)
+  {
+    Set next = active.minus(not_next);
+    const auto [it, added] = seen.try_emplace(Node{cells, tags, left, owed, busy}, Searched{swaps, not_next});
+    bool record = added;
+    if(!added)
+    {
+      Searched& before = it->second;
+      if(swaps < before.swaps)
+      {
+        before.swaps = swaps;
+        record = true;
+      }
+      else
+      {
+        next = before.not_searched.minus(not_next).intersection(active);
+        if(next.empty()) return;
+      }
+      before.not_searched = before.not_searched.intersection(not_next);
+    }
+    if(++nodes > max_nodes) throw Search_limit_reached();
+    if(record && owed.empty())
+    {
+      if(!busy)
+      {
+        can_end = true;
+        can_end_off_delaunay = can_end_off_delaunay || !space.is_delaunay(cells);
+      }
+      const auto key = std::make_tuple(cells, tags, busy);
+      auto end = ends.find(key);
+      if(end == ends.end() || end->second.first > swaps) ends[key] = {swaps, order};
+    }
+    next.for_each([&](int f) {
+      Set after_f;
+      if(reduce)
+        active.for_each([&](int g) {
+          if(g < f && commute(cells, tags, left, owed, active, g, f)) after_f.set(g);
+        });
+      const Step s = step(cells, tags, left, owed, active, f);
+      order.push_back(f);
+      run(s.visit.cells, s.visit.tags, s.left, s.owed, s.active, busy || s.visit.changed, swaps + s.visit.swap, order,
+          after_f);
+      order.pop_back();
+    });
+  }
+};
+
+/// The whole order of a cycle from its changing visits: every other listed
+/// facet at its first moment not there or inert (a facet visited later
+/// waits for its turn).
+template <int W>
+std::vector<Facet> whole_order(Space<W>& space, Bits<W> cells, Bits<W> tags, Bits<W> left,
+                               const std::vector<int>& changing)
+{
+  std::vector<Facet> order;
+  for(std::size_t k = 0; k <= changing.size(); ++k)
+  {
+    Bits<W> later;
+    for(std::size_t j = k; j < changing.size(); ++j) later.set(changing[j]);
+    left.minus(later).for_each([&](int f) {
+      if(space.visit(cells, tags, f).effective) return;
+      order.push_back(space.facet(f));
+      left.reset(f);
+    });
+    if(k == changing.size()) break;
+    const auto v = space.visit(cells, tags, changing[k]);
+    if(!v.effective) throw std::logic_error("a changing visit that changes nothing");
+    order.push_back(space.facet(changing[k]));
+    left.reset(changing[k]);
+    cells = v.cells;
+    tags = v.tags;
+  }
+  if(!left.empty()) throw std::logic_error("a listed facet without a turn");
+  return order;
+}
+
+/// What `search` found beyond adversarial_search's answer.
+struct Closure : Loop_found
+{
+  std::size_t states_that_can_end = 0;   // states from which one cycle can end the run
+  std::size_t states_reaching_end = 0;   // states from which some sequence of cycles ends it
+  bool fewest_swaps_searched = false;    // the loop kept has the fewest swaps (small graphs only)
+  std::size_t transitions = 0;
+};
+
+template <int W>
+Closure search_with(const nlohmann::json& header, std::size_t max_states, bool reduce, std::size_t max_nodes,
+                    const std::function<void(std::size_t, std::size_t, std::size_t)>& progress)
+{
+  typedef Bits<W> Set;
+  Closure result;
+  Space<W> space(header);
+  std::vector<std::pair<Set, Set>> states; // at cycles' ends, by number
+  std::unordered_map<std::pair<Set, Set>, std::size_t, std::function<std::size_t(const std::pair<Set, Set>&)>> index(
+      16, [](const std::pair<Set, Set>& s) { return std::size_t(s.first.hash() ^ (s.second.hash() * 31)); });
+  std::vector<std::vector<adversarial_search::Transition>> out;
+  std::vector<std::size_t> parent;
+  std::vector<std::vector<Facet>> parent_order;
+  std::vector<char> can_end;
+  {
+    const Checker start(header);
+    states.emplace_back(space.cell_set(start.cells()), space.cell_set(start.tags()));
+    index.emplace(states.back(), 0);
+  }
+  out.emplace_back();
+  parent.push_back(0);
+  parent_order.emplace_back();
+  try
+  {
+    for(std::size_t s = 0; s < states.size(); ++s)
+    {
+      const Set cells = states[s].first, tags = space.round_start_tags(states[s].second);
+      const Set listed = space.interior(cells);
+      Cycle_search<W> cycle{space, max_nodes, reduce};
+      cycle.run(cells, tags, listed);
+      result.nodes += cycle.nodes;
+      can_end.resize(states.size());
+      can_end[s] = cycle.can_end;
+      result.can_end_off_delaunay = result.can_end_off_delaunay || cycle.can_end_off_delaunay;
+      for(const auto& [key, found] : cycle.ends)
+      {
+        if(!std::get<2>(key)) continue; // an idle cycle: the run ends
+        const std::pair<Set, Set> next{std::get<0>(key), std::get<1>(key)};
+        auto [it, added] = index.emplace(next, states.size());
+        if(added)
+        {
+          states.push_back(next);
+          out.emplace_back();
+          parent.push_back(s);
+          parent_order.push_back(whole_order(space, cells, tags, listed, found.second));
+          if(states.size() > max_states) throw Search_limit_reached();
+        }
+        out[s].push_back({it->second, found.first, {}});
+        ++result.transitions;
+      }
+      if(progress) progress(s + 1, states.size(), result.nodes);
+    }
+    result.settled = true;
+  }
+  catch(const Search_limit_reached&)
+  {
+  }
+  result.states = states.size();
+  can_end.resize(states.size());
+  for(char c : can_end) result.states_that_can_end += c;
+  if(result.settled)
+  {
+    std::vector<std::vector<std::size_t>> into(states.size());
+    for(std::size_t u = 0; u < out.size(); ++u)
+      for(const auto& t : out[u]) into[t.to].push_back(u);
+    std::vector<char> reaches(states.size(), 0);
+    std::vector<std::size_t> stack;
+    for(std::size_t u = 0; u < states.size(); ++u)
+      if(can_end[u]) reaches[u] = 1, stack.push_back(u);
+    while(!stack.empty())
+    {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      for(std::size_t u : into[v])
+        if(!reaches[u]) reaches[u] = 1, stack.push_back(u);
+    }
+    for(char c : reaches) result.states_reaching_end += c;
+    result.ends_with_probability_one = result.states_reaching_end == states.size();
+  }
+  // A loop: a transition u -> v with a swap and a way back from v to u. With
+  // few states, the one with the fewest swaps; otherwise the first found.
+  result.fewest_swaps_searched = states.size() <= 20000;
+  std::size_t best = std::numeric_limits<std::size_t>::max();
+  std::vector<std::vector<Facet>> best_path;
+  auto order_of = [&](std::size_t u, std::size_t k) {
+    // The transition's whole order, found again by a search of the cycle from u.
+    const Set cells = states[u].first, tags = space.round_start_tags(states[u].second);
+    const Set listed = space.interior(cells);
+    Cycle_search<W> cycle{space, max_nodes, reduce};
+    cycle.run(cells, tags, listed);
+    const auto& target = states[out[u][k].to];
+    const auto& found = cycle.ends.at(std::make_tuple(target.first, target.second, true));
+    return whole_order(space, cells, tags, listed, found.second);
+  };
+  for(std::size_t u = 0; u < out.size() && (result.fewest_swaps_searched || best_path.empty()); ++u)
+    for(std::size_t k0 = 0; k0 < out[u].size(); ++k0)
+    {
+      const auto& t = out[u][k0];
+      if(t.swaps == 0) continue;
+      std::vector<long> back(states.size(), -1);
+      std::vector<std::size_t> via(states.size());
+      std::queue<std::size_t> q;
+      back[t.to] = long(t.to);
+      q.push(t.to);
+      while(!q.empty() && back[u] < 0)
+      {
+        const std::size_t x = q.front();
+        q.pop();
+        for(std::size_t k = 0; k < out[x].size(); ++k)
+          if(back[out[x][k].to] < 0)
+          {
+            back[out[x][k].to] = long(x);
+            via[out[x][k].to] = k;
+            q.push(out[x][k].to);
+          }
+      }
+      if(back[u] < 0) continue;
+      std::size_t swaps = t.swaps;
+      std::vector<std::pair<std::size_t, std::size_t>> steps{{u, k0}}; // u -> t.to -> ... -> u
+      std::vector<std::pair<std::size_t, std::size_t>> rest;
+      for(std::size_t x = u; x != t.to; x = std::size_t(back[x]))
+      {
+        rest.insert(rest.begin(), {std::size_t(back[x]), via[x]});
+        swaps += out[std::size_t(back[x])][via[x]].swaps;
+      }
+      steps.insert(steps.end(), rest.begin(), rest.end());
+      if(swaps >= best) continue;
+      best = swaps;
+      std::vector<std::vector<Facet>> loop;
+      for(const auto& [x, k] : steps) loop.push_back(order_of(x, k));
+      std::vector<std::vector<Facet>> lead; // the start -> u
+      for(std::size_t x = u; x != 0; x = parent[x]) lead.insert(lead.begin(), parent_order[x]);
+      best_path = lead;
+      for(int pass = 0; pass < 2; ++pass) best_path.insert(best_path.end(), loop.begin(), loop.end());
+      result.loop_cycles = loop.size();
+      if(!result.fewest_swaps_searched) break;
+    }
+  if(!best_path.empty())
+  {
+    result.loop = true;
+    result.loop_swaps = best;
+    result.trace = adversarial_search::write_trace(header, best_path);
+  }
+  return result;
+}
+
+/// The search from the start of `header` (a trace header with its cells, a
+/// next-cycle reading), within `max_states` states at cycles' ends and
+/// `max_nodes` nodes in one cycle's search. `progress(done, states, nodes)`
+/// is called after each state's cycle is searched.
+inline Closure search(const nlohmann::json& header, std::size_t max_states, bool reduce = true,
+                      std::size_t max_nodes = 0, const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {})
+{
+  if(max_nodes == 0) max_nodes = max_states * 64;
+  try { return search_with<4>(header, max_states, reduce, max_nodes, progress); }
+  catch(const Too_many_numbers&) {}
+  try { return search_with<16>(header, max_states, reduce, max_nodes, progress); }
+  catch(const Too_many_numbers&) {}
+  return search_with<64>(header, max_states, reduce, max_nodes, progress);
+}
+
+} // namespace effective_visit_search
+
+#endif // EDGE_SWAPPING_3_TEST_EFFECTIVE_VISIT_SEARCH_H
