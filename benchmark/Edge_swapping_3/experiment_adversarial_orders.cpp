@@ -26,7 +26,9 @@
 // With --effective the search is test/Edge_swapping_3/effective_visit_search.h,
 // which branches only on the visits that change the state (with the
 // reduction): the same answers, for next-cycle readings, on starts of more
-// than 9 points; it prints the states from which an end can be reached, and
+// than 9 points. The starts of a set share its graph of states (each state's
+// cycle is searched once), so "nodes" counts only those searched anew for a
+// start. It prints the states from which an end can be reached, and
 // one line of progress to standard error for each of the first 10 states,
 // then every 1,000.
 
@@ -133,20 +135,30 @@ int main(int argc, char** argv)
     header["reading"] = ES::helper_reading_name(reading);
     std::size_t settled = 0, loops = 0, states = 0, fewest = std::numeric_limits<std::size_t>::max(), fewest_cycles = 0;
     std::size_t surely = 0, off_delaunay = 0;
-    for(std::size_t t = 0; t < starts.size(); ++t)
+    std::vector<nlohmann::json> headers;
+    for(const auto& start : starts)
     {
       nlohmann::json h = header;
       nlohmann::json cells = nlohmann::json::array();
-      for(const auto& c : starts[t]) cells.push_back({c[0], c[1], c[2], c[3]});
+      for(const auto& c : start) cells.push_back({c[0], c[1], c[2], c[3]});
       h["cells"] = cells;
+      headers.push_back(h);
+    }
+    // The changing-visit search shares one graph of states among the starts.
+    std::vector<effective_visit_search::Closure> closures;
+    if(effective)
+      closures = effective_visit_search::search_all(
+          headers, max_states, true, 0, [&](std::size_t t, std::size_t done, std::size_t found, std::size_t nodes) {
+            if(done <= 10 || done % 1000 == 0)
+              std::cerr << "start " << t << ": " << done << " of " << found << " states searched, " << nodes << " nodes\n";
+          });
+    for(std::size_t t = 0; t < starts.size(); ++t)
+    {
+      const nlohmann::json& h = headers[t];
       Loop_found r;
       if(effective)
       {
-        const auto progress = [&](std::size_t done, std::size_t found, std::size_t nodes) {
-          if(done <= 10 || done % 1000 == 0)
-            std::cerr << "start " << t << ": " << done << " of " << found << " states searched, " << nodes << " nodes\n";
-        };
-        const effective_visit_search::Closure c = effective_visit_search::search(h, max_states, true, 0, progress);
+        const effective_visit_search::Closure& c = closures[t];
         r = c;
         std::cout << "start " << t << ": " << c.states << " states" << (c.settled ? "" : " (not settled)") << ", "
                   << c.transitions << " cycles between them, " << c.nodes << " nodes; " << c.states_that_can_end

@@ -533,165 +533,275 @@ struct Closure : Loop_found
   std::size_t transitions = 0;
 };
 
+// The graph of states at cycles' ends of one point set under one reading,
+// shared by the starts searched from it: a state's next cycles do not depend
+// on where the run started.
 template <int W>
-Closure search_with(const nlohmann::json& header, std::size_t max_states, bool reduce, std::size_t max_nodes,
-                    const std::function<void(std::size_t, std::size_t, std::size_t)>& progress)
+class Graph
 {
+public:
   typedef Bits<W> Set;
-  Closure result;
-  Space<W> space(header);
-  std::vector<std::pair<Set, Set>> states; // at cycles' ends, by number
-  std::unordered_map<std::pair<Set, Set>, std::size_t, std::function<std::size_t(const std::pair<Set, Set>&)>> index(
-      16, [](const std::pair<Set, Set>& s) { return std::size_t(s.first.hash() ^ (s.second.hash() * 31)); });
-  std::vector<std::vector<adversarial_search::Transition>> out;
-  std::vector<std::size_t> parent;
-  std::vector<std::vector<Facet>> parent_order;
-  std::vector<char> can_end;
+  typedef std::function<void(std::size_t, std::size_t, std::size_t)> Progress;
+
+  Graph(const nlohmann::json& header, bool reduce, std::size_t max_nodes)
+    : space_(header), reduce_(reduce), max_nodes_(max_nodes)
   {
-    const Checker start(header);
-    states.emplace_back(space.cell_set(start.cells()), space.cell_set(start.tags()));
-    index.emplace(states.back(), 0);
   }
-  out.emplace_back();
-  parent.push_back(0);
-  parent_order.emplace_back();
-  try
+
+  /// The search from the cells and tags of `start` (a trace header of the same
+  /// points and reading), within `max_states` states reached from it.
+  Closure search(const nlohmann::json& start, std::size_t max_states, const Progress& progress)
   {
-    for(std::size_t s = 0; s < states.size(); ++s)
+    Closure result;
+    const Checker model(start);
+    const std::size_t root = number(space_.cell_set(model.cells()), space_.cell_set(model.tags()));
+    // Breadth first from the start, each state's cycle searched once for all starts.
+    std::unordered_map<std::size_t, std::size_t> parent{{root, root}};
+    std::vector<std::size_t> reached{root};
+    const std::size_t nodes_before = nodes_;
+    try
     {
-      const Set cells = states[s].first, tags = space.round_start_tags(states[s].second);
-      const Set listed = space.interior(cells);
-      Cycle_search<W> cycle{space, max_nodes, reduce};
-      cycle.run(cells, tags, listed);
-      result.nodes += cycle.nodes;
-      can_end.resize(states.size());
-      can_end[s] = cycle.can_end;
-      result.can_end_off_delaunay = result.can_end_off_delaunay || cycle.can_end_off_delaunay;
-      for(const auto& [key, found] : cycle.ends)
+      for(std::size_t k = 0; k < reached.size(); ++k)
       {
-        if(!std::get<2>(key)) continue; // an idle cycle: the run ends
-        const std::pair<Set, Set> next{std::get<0>(key), std::get<1>(key)};
-        auto [it, added] = index.emplace(next, states.size());
-        if(added)
-        {
-          states.push_back(next);
-          out.emplace_back();
-          parent.push_back(s);
-          parent_order.push_back(whole_order(space, cells, tags, listed, found.second));
-          if(states.size() > max_states) throw Search_limit_reached();
-        }
-        out[s].push_back({it->second, found.first, {}});
-        ++result.transitions;
+        const std::size_t u = reached[k];
+        expand(u);
+        for(const Edge& t : out_[u])
+          if(parent.emplace(t.to, u).second)
+          {
+            reached.push_back(t.to);
+            if(reached.size() > max_states) throw Search_limit_reached();
+          }
+        if(progress) progress(k + 1, reached.size(), nodes_ - nodes_before);
       }
-      if(progress) progress(s + 1, states.size(), result.nodes);
+      result.settled = true;
     }
-    result.settled = true;
-  }
-  catch(const Search_limit_reached&)
-  {
-  }
-  result.states = states.size();
-  can_end.resize(states.size());
-  for(char c : can_end) result.states_that_can_end += c;
-  if(result.settled)
-  {
-    std::vector<std::vector<std::size_t>> into(states.size());
-    for(std::size_t u = 0; u < out.size(); ++u)
-      for(const auto& t : out[u]) into[t.to].push_back(u);
-    std::vector<char> reaches(states.size(), 0);
-    std::vector<std::size_t> stack;
-    for(std::size_t u = 0; u < states.size(); ++u)
-      if(can_end[u]) reaches[u] = 1, stack.push_back(u);
-    while(!stack.empty())
+    catch(const Search_limit_reached&)
     {
-      const std::size_t v = stack.back();
-      stack.pop_back();
-      for(std::size_t u : into[v])
-        if(!reaches[u]) reaches[u] = 1, stack.push_back(u);
     }
-    for(char c : reaches) result.states_reaching_end += c;
-    result.ends_with_probability_one = result.states_reaching_end == states.size();
+    result.nodes = nodes_ - nodes_before;
+    result.states = reached.size();
+    for(std::size_t u : reached)
+      if(expanded(u))
+      {
+        result.states_that_can_end += can_end_[u];
+        result.can_end_off_delaunay = result.can_end_off_delaunay || can_end_off_delaunay_[u];
+        result.transitions += out_[u].size();
+      }
+    if(result.settled)
+    {
+      // The states of the start's graph from which an end can be reached: backwards from those that can end.
+      std::unordered_map<std::size_t, std::vector<std::size_t>> into;
+      for(std::size_t u : reached)
+        for(const Edge& t : out_[u]) into[t.to].push_back(u);
+      std::unordered_map<std::size_t, char> reaches;
+      std::vector<std::size_t> stack;
+      for(std::size_t u : reached)
+        if(can_end_[u]) reaches[u] = 1, stack.push_back(u);
+      while(!stack.empty())
+      {
+        const std::size_t v = stack.back();
+        stack.pop_back();
+        for(std::size_t u : into[v])
+          if(reaches.emplace(u, 1).second) stack.push_back(u);
+      }
+      result.states_reaching_end = reaches.size();
+      result.ends_with_probability_one = result.states_reaching_end == reached.size();
+    }
+    find_loop(result, start, root, reached, parent);
+    return result;
   }
+
+  /// The states met so far from every start, and the nodes of their cycles' searches.
+  std::size_t states() const { return states_.size(); }
+
+private:
+  struct Edge
+  {
+    std::size_t to, swaps;
+  };
+  struct State_hash
+  {
+    std::size_t operator()(const std::pair<Set, Set>& s) const
+    {
+      return std::size_t(s.first.hash() ^ (s.second.hash() * 31));
+    }
+  };
+
+  std::size_t number(const Set& cells, const Set& tags)
+  {
+    const auto [it, added] = index_.emplace(std::make_pair(cells, tags), states_.size());
+    if(added)
+    {
+      states_.emplace_back(cells, tags);
+      out_.emplace_back();
+      can_end_.push_back(0);
+      can_end_off_delaunay_.push_back(0);
+      expanded_.push_back(0);
+    }
+    return it->second;
+  }
+  bool expanded(std::size_t u) const { return expanded_[u] != 0; }
+
+  // The cycle from state u, searched: its ends numbered as states, in the
+  // order of the ends' cells and tags.
+  Cycle_search<W> cycle_from(std::size_t u)
+  {
+    const Set cells = states_[u].first, tags = space_.round_start_tags(states_[u].second);
+    Cycle_search<W> cycle{space_, max_nodes_, reduce_};
+    cycle.run(cells, tags, space_.interior(cells));
+    return cycle;
+  }
+
+  void expand(std::size_t u)
+  {
+    if(expanded(u)) return;
+    Cycle_search<W> cycle = cycle_from(u);
+    nodes_ += cycle.nodes;
+    std::vector<Edge> edges;
+    for(const auto& [key, found] : cycle.ends)
+      if(std::get<2>(key)) // a busy cycle; an idle one ends the run
+        edges.push_back({number(std::get<0>(key), std::get<1>(key)), found.first});
+    out_[u] = std::move(edges);
+    can_end_[u] = cycle.can_end;
+    can_end_off_delaunay_[u] = cycle.can_end_off_delaunay;
+    expanded_[u] = 1;
+  }
+
+  // The whole order of the cycle from u to v, found again by searching the cycle.
+  std::vector<Facet> order_between(std::size_t u, std::size_t v)
+  {
+    Cycle_search<W> cycle = cycle_from(u);
+    const Set cells = states_[u].first, tags = space_.round_start_tags(states_[u].second);
+    const auto& found = cycle.ends.at(std::make_tuple(states_[v].first, states_[v].second, true));
+    return whole_order(space_, cells, tags, space_.interior(cells), found.second);
+  }
+
+  // The way back from t.to to u by fewest cycles (breadth first), as the
+  // states u, t.to, ..., u; empty if there is none. It depends on the graph
+  // alone, not on the start, so its swaps are kept for every start.
+  std::vector<std::size_t> way_back(std::size_t u, const Edge& t)
+  {
+    std::unordered_map<std::size_t, std::size_t> back{{t.to, t.to}};
+    std::queue<std::size_t> q;
+    q.push(t.to);
+    while(!q.empty() && !back.count(u))
+    {
+      const std::size_t x = q.front();
+      q.pop();
+      if(!expanded(x)) continue;
+      for(const Edge& e : out_[x])
+        if(back.emplace(e.to, x).second) q.push(e.to);
+    }
+    if(!back.count(u)) return {};
+    std::vector<std::size_t> path{u};
+    for(std::size_t x = u; x != t.to; x = back.at(x)) path.insert(path.begin() + 1, back.at(x));
+    path.push_back(u);
+    return path;
+  }
+  std::size_t swaps_between(std::size_t u, std::size_t v) const
+  {
+    for(const Edge& e : out_[u])
+      if(e.to == v) return e.swaps;
+    throw std::logic_error("no such cycle");
+  }
+
   // A loop: a transition u -> v with a swap and a way back from v to u. With
   // few states, the one with the fewest swaps; otherwise the first found.
-  result.fewest_swaps_searched = states.size() <= 20000;
-  std::size_t best = std::numeric_limits<std::size_t>::max();
-  std::vector<std::vector<Facet>> best_path;
-  auto order_of = [&](std::size_t u, std::size_t k) {
-    // The transition's whole order, found again by a search of the cycle from u.
-    const Set cells = states[u].first, tags = space.round_start_tags(states[u].second);
-    const Set listed = space.interior(cells);
-    Cycle_search<W> cycle{space, max_nodes, reduce};
-    cycle.run(cells, tags, listed);
-    const auto& target = states[out[u][k].to];
-    const auto& found = cycle.ends.at(std::make_tuple(target.first, target.second, true));
-    return whole_order(space, cells, tags, listed, found.second);
-  };
-  for(std::size_t u = 0; u < out.size() && (result.fewest_swaps_searched || best_path.empty()); ++u)
-    for(std::size_t k0 = 0; k0 < out[u].size(); ++k0)
-    {
-      const auto& t = out[u][k0];
-      if(t.swaps == 0) continue;
-      std::vector<long> back(states.size(), -1);
-      std::vector<std::size_t> via(states.size());
-      std::queue<std::size_t> q;
-      back[t.to] = long(t.to);
-      q.push(t.to);
-      while(!q.empty() && back[u] < 0)
-      {
-        const std::size_t x = q.front();
-        q.pop();
-        for(std::size_t k = 0; k < out[x].size(); ++k)
-          if(back[out[x][k].to] < 0)
-          {
-            back[out[x][k].to] = long(x);
-            via[out[x][k].to] = k;
-            q.push(out[x][k].to);
-          }
-      }
-      if(back[u] < 0) continue;
-      std::size_t swaps = t.swaps;
-      std::vector<std::pair<std::size_t, std::size_t>> steps{{u, k0}}; // u -> t.to -> ... -> u
-      std::vector<std::pair<std::size_t, std::size_t>> rest;
-      for(std::size_t x = u; x != t.to; x = std::size_t(back[x]))
-      {
-        rest.insert(rest.begin(), {std::size_t(back[x]), via[x]});
-        swaps += out[std::size_t(back[x])][via[x]].swaps;
-      }
-      steps.insert(steps.end(), rest.begin(), rest.end());
-      if(swaps >= best) continue;
-      best = swaps;
-      std::vector<std::vector<Facet>> loop;
-      for(const auto& [x, k] : steps) loop.push_back(order_of(x, k));
-      std::vector<std::vector<Facet>> lead; // the start -> u
-      for(std::size_t x = u; x != 0; x = parent[x]) lead.insert(lead.begin(), parent_order[x]);
-      best_path = lead;
-      for(int pass = 0; pass < 2; ++pass) best_path.insert(best_path.end(), loop.begin(), loop.end());
-      result.loop_cycles = loop.size();
-      if(!result.fewest_swaps_searched) break;
-    }
-  if(!best_path.empty())
+  void find_loop(Closure& result, const nlohmann::json& start, std::size_t root, const std::vector<std::size_t>& reached,
+                 const std::unordered_map<std::size_t, std::size_t>& parent)
   {
+    result.fewest_swaps_searched = reached.size() <= 20000;
+    constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+    std::size_t best = none, best_u = 0, best_k = 0;
+    for(std::size_t u : reached)
+    {
+      if(!expanded(u)) continue;
+      for(std::size_t k = 0; k < out_[u].size(); ++k)
+      {
+        const Edge& t = out_[u][k];
+        if(t.swaps == 0 || !expanded(t.to)) continue;
+        const auto key = std::make_pair(u, k);
+        auto known = loop_swaps_.find(key);
+        if(known == loop_swaps_.end())
+        {
+          const std::vector<std::size_t> path = way_back(u, t);
+          std::size_t swaps = path.empty() ? none : 0;
+          for(std::size_t j = 0; j + 1 < path.size(); ++j) swaps += swaps_between(path[j], path[j + 1]);
+          known = loop_swaps_.emplace(key, swaps).first;
+        }
+        if(known->second < best)
+        {
+          best = known->second;
+          best_u = u;
+          best_k = k;
+          if(!result.fewest_swaps_searched) break;
+        }
+      }
+      if(best != none && !result.fewest_swaps_searched) break;
+    }
+    if(best == none) return;
+    const std::vector<std::size_t> cycle = way_back(best_u, out_[best_u][best_k]);
+    std::vector<std::vector<Facet>> lead; // the start -> u
+    for(std::size_t x = best_u; x != root; x = parent.at(x)) lead.insert(lead.begin(), order_between(parent.at(x), x));
+    std::vector<std::vector<Facet>> loop;
+    for(std::size_t k = 0; k + 1 < cycle.size(); ++k) loop.push_back(order_between(cycle[k], cycle[k + 1]));
+    std::vector<std::vector<Facet>> path = lead;
+    for(int pass = 0; pass < 2; ++pass) path.insert(path.end(), loop.begin(), loop.end());
     result.loop = true;
     result.loop_swaps = best;
-    result.trace = adversarial_search::write_trace(header, best_path);
+    result.loop_cycles = loop.size();
+    result.trace = adversarial_search::write_trace(start, path);
   }
-  return result;
+
+  struct Pair_hash
+  {
+    std::size_t operator()(const std::pair<std::size_t, std::size_t>& p) const
+    {
+      return std::size_t(p.first * 0x9E3779B97F4A7C15ull ^ p.second);
+    }
+  };
+  Space<W> space_;
+  bool reduce_;
+  std::size_t max_nodes_, nodes_ = 0;
+  std::vector<std::pair<Set, Set>> states_;
+  std::unordered_map<std::pair<Set, Set>, std::size_t, State_hash> index_;
+  std::vector<std::vector<Edge>> out_;
+  std::vector<char> can_end_, can_end_off_delaunay_, expanded_;
+  std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, Pair_hash> loop_swaps_; // (u, k) -> swaps of its loop
+};
+
+/// The searches from `starts` (trace headers of the same points and reading,
+/// next-cycle), sharing one graph, each within `max_states` states at cycles'
+/// ends and `max_nodes` nodes in one cycle's search (0: 64 x max_states).
+/// `progress(done, states, nodes)` is called after each state's cycle is searched.
+inline std::vector<Closure> search_all(const std::vector<nlohmann::json>& starts, std::size_t max_states,
+                                       bool reduce = true, std::size_t max_nodes = 0,
+                                       const std::function<void(std::size_t, std::size_t, std::size_t, std::size_t)>&
+                                           progress = {})
+{
+  if(starts.empty()) return {};
+  if(max_nodes == 0) max_nodes = max_states * 64;
+  auto with = [&](auto words) {
+    constexpr int W = decltype(words)::value;
+    Graph<W> graph(starts.front(), reduce, max_nodes);
+    std::vector<Closure> results;
+    for(std::size_t k = 0; k < starts.size(); ++k)
+      results.push_back(graph.search(starts[k], max_states, [&](std::size_t done, std::size_t found, std::size_t nodes) {
+        if(progress) progress(k, done, found, nodes);
+      }));
+    return results;
+  };
+  try { return with(std::integral_constant<int, 4>()); }
+  catch(const Too_many_numbers&) {}
+  try { return with(std::integral_constant<int, 16>()); }
+  catch(const Too_many_numbers&) {}
+  return with(std::integral_constant<int, 64>());
 }
 
-/// The search from the start of `header` (a trace header with its cells, a
-/// next-cycle reading), within `max_states` states at cycles' ends and
-/// `max_nodes` nodes in one cycle's search. `progress(done, states, nodes)`
-/// is called after each state's cycle is searched.
-inline Closure search(const nlohmann::json& header, std::size_t max_states, bool reduce = true,
-                      std::size_t max_nodes = 0, const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {})
+/// The search from the start of `header` alone.
+inline Closure search(const nlohmann::json& header, std::size_t max_states, bool reduce = true, std::size_t max_nodes = 0)
 {
-  if(max_nodes == 0) max_nodes = max_states * 64;
-  try { return search_with<4>(header, max_states, reduce, max_nodes, progress); }
-  catch(const Too_many_numbers&) {}
-  try { return search_with<16>(header, max_states, reduce, max_nodes, progress); }
-  catch(const Too_many_numbers&) {}
-  return search_with<64>(header, max_states, reduce, max_nodes, progress);
+  return search_all({header}, max_states, reduce, max_nodes).front();
 }
 
 } // namespace effective_visit_search
