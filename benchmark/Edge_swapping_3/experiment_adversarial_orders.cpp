@@ -30,7 +30,7 @@
 // cycle is searched once), so "nodes" counts only those searched anew for a
 // start. It prints the states from which an end can be reached, and
 // one line of progress to standard error for each of the first 10 states,
-// then every 1,000.
+// then every 100.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -149,7 +149,7 @@ int main(int argc, char** argv)
     if(effective)
       closures = effective_visit_search::search_all(
           headers, max_states, true, 0, [&](std::size_t t, std::size_t done, std::size_t found, std::size_t nodes) {
-            if(done <= 10 || done % 1000 == 0)
+            if(done <= 10 || done % 100 == 0)
               std::cerr << "start " << t << ": " << done << " of " << found << " states searched, " << nodes << " nodes\n";
           });
     for(std::size_t t = 0; t < starts.size(); ++t)

@@ -21,16 +21,20 @@
 // of them that have had no such moment yet, busy); the cycle may end at a node
 // where the last set is empty. The ends, and the fewest swaps of each, are the
 // same as when every order of the listed facets is tried, as
-// adversarial_search.h does; the test "The effective-visit search agrees with
-// the adversarial search" compares them start by start on 6 and 7 points.
+// adversarial_search.h does; the test "Adversarial orders: the effective-visit
+// search reaches the same states, loops and answers as the adversarial search"
+// compares them start by start on 6 and 7 points.
 //
 // With `reduce`, the partial-order reduction of adversarial_search.h: after a
 // changing visit h from node n, a facet g listed before h is not visited next
 // when g then h and h then g, from n, both change the state at each step and
-// end in the same node with the same swaps.
+// end in the same node with the same swaps. Two visits whose five points share
+// at most two points commute unless an owed facet has two of its points in
+// both (neither reads a cell the other writes); other pairs are tried.
 //
-// Cells and facets are numbered as they are met, in sets of W 64-bit words;
-// a start that meets more than 64 W of either is searched again with 2 W.
+// Cells and facets are numbered as they are met, in sets of W 64-bit words
+// (W = 4, 16, 64); a set of starts that meets more than 64 W of either is
+// searched again with the next W.
 // The rule is the checker's model (`Checker::decide` and `apply`): each
 // decision is computed on the whole state once and kept by what it depends
 // on (the facet, its two apexes, which cells of the five points are there and
@@ -698,6 +702,60 @@ private:
     path.push_back(u);
     return path;
   }
+  // The strongly connected components of the graph of `reached` (closed
+  // under transitions: every state a transition of a searched state goes to
+  // is in it), by Tarjan's algorithm without recursion: state -> component.
+  std::unordered_map<std::size_t, std::size_t> components(const std::vector<std::size_t>& reached) const
+  {
+    std::unordered_map<std::size_t, std::size_t> index, low, component;
+    std::vector<std::size_t> stack;
+    std::unordered_set<std::size_t> on_stack;
+    std::size_t next_index = 0, next_component = 0;
+    for(std::size_t root : reached)
+    {
+      if(index.count(root)) continue;
+      std::vector<std::pair<std::size_t, std::size_t>> calls{{root, 0}}; // state, next edge
+      index[root] = low[root] = next_index++;
+      stack.push_back(root);
+      on_stack.insert(root);
+      while(!calls.empty())
+      {
+        auto& [v, k] = calls.back();
+        const std::vector<Edge>& edges = expanded(v) ? out_[v] : no_edges_;
+        if(k < edges.size())
+        {
+          const std::size_t w = edges[k++].to;
+          if(!index.count(w))
+          {
+            index[w] = low[w] = next_index++;
+            stack.push_back(w);
+            on_stack.insert(w);
+            calls.emplace_back(w, 0);
+          }
+          else if(on_stack.count(w))
+            low[v] = std::min(low[v], index[w]);
+          continue;
+        }
+        if(low[v] == index[v])
+        {
+          std::size_t w;
+          do
+          {
+            w = stack.back();
+            stack.pop_back();
+            on_stack.erase(w);
+            component[w] = next_component;
+          } while(w != v);
+          ++next_component;
+        }
+        const std::size_t done = v;
+        calls.pop_back();
+        if(!calls.empty()) low[calls.back().first] = std::min(low[calls.back().first], low[done]);
+      }
+    }
+    return component;
+  }
+
   std::size_t swaps_between(std::size_t u, std::size_t v) const
   {
     for(const Edge& e : out_[u])
@@ -706,12 +764,14 @@ private:
   }
 
   // A loop: a transition u -> v with a swap and a way back from v to u. With
-  // few states, the one with the fewest swaps; otherwise the first found.
+  // at most 2,000 states, the one with the fewest swaps (its way back by
+  // fewest cycles); otherwise the first found.
   void find_loop(Closure& result, const nlohmann::json& start, std::size_t root, const std::vector<std::size_t>& reached,
                  const std::unordered_map<std::size_t, std::size_t>& parent)
   {
-    result.fewest_swaps_searched = reached.size() <= 20000;
+    result.fewest_swaps_searched = reached.size() <= 2000;
     constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+    const std::unordered_map<std::size_t, std::size_t> component = components(reached);
     std::size_t best = none, best_u = 0, best_k = 0;
     for(std::size_t u : reached)
     {
@@ -719,7 +779,8 @@ private:
       for(std::size_t k = 0; k < out_[u].size(); ++k)
       {
         const Edge& t = out_[u][k];
-        if(t.swaps == 0 || !expanded(t.to)) continue;
+        // A transition is on a loop exactly when it stays in its strongly connected component.
+        if(t.swaps == 0 || !expanded(t.to) || component.at(u) != component.at(t.to)) continue;
         const auto key = std::make_pair(u, k);
         auto known = loop_swaps_.find(key);
         if(known == loop_swaps_.end())
@@ -768,6 +829,7 @@ private:
   std::vector<std::vector<Edge>> out_;
   std::vector<char> can_end_, can_end_off_delaunay_, expanded_;
   std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, Pair_hash> loop_swaps_; // (u, k) -> swaps of its loop
+  const std::vector<Edge> no_edges_;
 };
 
 /// The searches from `starts` (trace headers of the same points and reading,
