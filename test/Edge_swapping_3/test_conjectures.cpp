@@ -1293,6 +1293,25 @@ TEST_CASE("Adversarial orders: the effective-visit search reaches the same state
     }
   REQUIRE(compared >= 4 * 18 * 2);
   REQUIRE(loops > 0);
+
+  // Set 25 of 7 points, whose 24 starts the search over every order did not
+  // settle (stop 31): every start settles, with no loop, and random orders
+  // end the run with probability one.
+  const auto points = ES::point_families::random_integer<Point>(7, 25);
+  std::vector<nlohmann::json> headers;
+  for(const auto& cells : ES::IO::topcom_triangulations(points, 1000).triangulations)
+    headers.push_back(adversarial_header(points, cells, ES::Helper_reading()));
+  REQUIRE(headers.size() == 24);
+  std::size_t states = 0;
+  for(const auto& r : effective_visit_search::search_all(headers, 20000))
+  {
+    REQUIRE(r.settled);
+    REQUIRE_FALSE(r.loop);
+    REQUIRE(r.ends_with_probability_one);
+    REQUIRE_FALSE(r.can_end_off_delaunay);
+    states += r.states;
+  }
+  REQUIRE(states == 50);
   WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << nodes
                 << " over every order, " << effective_nodes << " over the changing visits");
 }
