@@ -87,6 +87,22 @@ struct Mask
   }
 };
 
+/// The interior facets of a set of cells (those in two of them), as a set of
+/// facet numbers, given the numbers of each cell's four facets.
+template <class Set>
+Set interior_facets(const Set& cells, const std::vector<std::array<int, 4>>& cell_facets)
+{
+  Set once, twice;
+  cells.for_each([&](int k) {
+    for(int f : cell_facets[std::size_t(k)])
+    {
+      if(once.test(f)) twice.set(f);
+      once.set(f);
+    }
+  });
+  return twice;
+}
+
 /// The cells and facets of the points, numbered in lexicographic order (so a
 /// facet's number orders facets as the listing does), and the visits met so
 /// far: each is computed once on the checker's model, then read from here.
@@ -115,18 +131,7 @@ public:
   }
 
   /// The interior facets of the cells: those in two of them.
-  Mask interior(const Mask& cells) const
-  {
-    Mask once, twice;
-    cells.for_each([&](int k) {
-      for(int f : cell_facets_[std::size_t(k)])
-      {
-        if(once.test(f)) twice.set(f);
-        once.set(f);
-      }
-    });
-    return twice;
-  }
+  Mask interior(const Mask& cells) const { return interior_facets(cells, cell_facets_); }
 
   Mask cell_mask(const std::set<Cell>& cells) const
   {

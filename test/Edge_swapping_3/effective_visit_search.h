@@ -169,18 +169,7 @@ public:
   }
 
   /// The interior facets of the cells: those in two of them.
-  Set interior(const Set& cells) const
-  {
-    Set once, twice;
-    cells.for_each([&](int k) {
-      for(int f : cell_facets_[std::size_t(k)])
-      {
-        if(once.test(f)) twice.set(f);
-        once.set(f);
-      }
-    });
-    return twice;
-  }
+  Set interior(const Set& cells) const { return adversarial_search::interior_facets(cells, cell_facets_); }
 
   /// The tags at a cycle's start, as the reading says.
   Set round_start_tags(const Set& tags) const { return clear_tags_each_cycle_ ? Set() : tags; }
