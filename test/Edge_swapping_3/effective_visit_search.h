@@ -173,7 +173,6 @@ public:
 
   /// The tags at a cycle's start, as the reading says.
   Set round_start_tags(const Set& tags) const { return clear_tags_each_cycle_ ? Set() : tags; }
-  bool ends_without_swap() const { return model_.ends_without_swap(); }
 
   bool is_delaunay(const Set& cells)
   {
@@ -603,9 +602,6 @@ public:
     find_loop(result, start, root, reached, parent);
     return result;
   }
-
-  /// The states met so far from every start, and the nodes of their cycles' searches.
-  std::size_t states() const { return states_.size(); }
 
 private:
   struct Edge
