@@ -43,6 +43,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,19 @@ int main(int argc, char** argv)
     std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]\n";
     return 2;
   }
+  // A whole number, or false (not digits, or too large).
+  auto whole_number = [](const std::string& text, std::size_t& value) {
+    if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
+    try
+    {
+      value = std::stoul(text);
+    }
+    catch(const std::out_of_range&)
+    {
+      return false;
+    }
+    return true;
+  };
   const std::string source = argv[1];
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::array<std::size_t, 4>>> starts;
@@ -71,10 +85,21 @@ int main(int argc, char** argv)
   for(char ch : source)
     if(ch == ':') part.emplace_back();
     else part.back() += ch;
-  if(part[0] == "random-integer" && part.size() == 3)
-    points = ES::point_families::random_integer<K::Point_3>(std::stoul(part[1]), unsigned(std::stoul(part[2])));
-  else if(part[0] == "family" && part.size() == 4)
-    points = ES::make_point_family<K::Point_3>(part[1], std::stoul(part[2]), unsigned(std::stoul(part[3])));
+  std::size_t n = 0, seed = 0;
+  if(part[0] == "random-integer" && part.size() == 3 && whole_number(part[1], n) && whole_number(part[2], seed))
+    points = ES::point_families::random_integer<K::Point_3>(n, unsigned(seed));
+  else if(part[0] == "family" && part.size() == 4 && whole_number(part[2], n) && whole_number(part[3], seed))
+  {
+    try
+    {
+      points = ES::make_point_family<K::Point_3>(part[1], n, unsigned(seed));
+    }
+    catch(const std::invalid_argument& e) // an unknown family
+    {
+      std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
+      return 2;
+    }
+  }
   else if(source.size() > 5 && source.compare(source.size() - 5, 5, ".json") == 0)
   {
     try
@@ -119,7 +144,12 @@ int main(int argc, char** argv)
         std::cerr << "experiment_adversarial_orders: --effective searches next-cycle readings only\n";
         return 2;
       }
-  const std::size_t max_states = std::stoul(argv[3]);
+  std::size_t max_states = 0;
+  if(!whole_number(argv[3], max_states) || max_states == 0)
+  {
+    std::cerr << "experiment_adversarial_orders: MAX_STATES is a whole number above 0, not '" << argv[3] << "'\n";
+    return 2;
+  }
   if(starts.empty()) starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
   std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " triangulations\n");
   nlohmann::json header{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},

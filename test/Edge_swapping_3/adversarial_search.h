@@ -237,6 +237,23 @@ private:
   std::unordered_map<Key, Visit, Key_hash> visits_;
 };
 
+// Records that a cycle search reached the end (cells, tags, busy) of its cycle
+// with `swaps` swaps by `order`: an idle end can end the run; each end keeps
+// its fewest swaps and the first order met with them.
+template <class Search, class Set>
+void record_end(Search& search, const Set& cells, const Set& tags, bool busy, std::size_t swaps,
+                const std::vector<int>& order)
+{
+  if(!busy)
+  {
+    search.can_end = true;
+    search.can_end_off_delaunay = search.can_end_off_delaunay || !search.space.is_delaunay(cells);
+  }
+  const auto key = std::make_tuple(cells, tags, busy);
+  auto end = search.ends.find(key);
+  if(end == search.ends.end() || end->second.first > swaps) search.ends[key] = {swaps, order};
+}
+
 // Every end of one cycle from a state at a cycle's start: the state, whether
 // the cycle was busy, its fewest swaps and one order that reaches it with
 // them (the first met with them, depth first in the listed order). A node
@@ -305,14 +322,7 @@ struct Cycle_search
     if(++nodes > max_nodes) throw Search_limit_reached();
     if(left.empty())
     {
-      if(!busy)
-      {
-        can_end = true;
-        can_end_off_delaunay = can_end_off_delaunay || !space.is_delaunay(cells);
-      }
-      const auto key = std::make_tuple(cells, tags, busy);
-      auto end = ends.find(key);
-      if(end == ends.end() || end->second.first > swaps) ends[key] = {swaps, order};
+      record_end(*this, cells, tags, busy, swaps, order);
       return;
     }
     next.for_each([&](int f) {

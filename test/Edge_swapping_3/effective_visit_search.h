@@ -461,17 +461,7 @@ struct Cycle_search
       before.not_searched = before.not_searched.intersection(not_next);
     }
     if(++nodes > max_nodes) throw Search_limit_reached();
-    if(record && owed.empty())
-    {
-      if(!busy)
-      {
-        can_end = true;
-        can_end_off_delaunay = can_end_off_delaunay || !space.is_delaunay(cells);
-      }
-      const auto key = std::make_tuple(cells, tags, busy);
-      auto end = ends.find(key);
-      if(end == ends.end() || end->second.first > swaps) ends[key] = {swaps, order};
-    }
+    if(record && owed.empty()) adversarial_search::record_end(*this, cells, tags, busy, swaps, order);
     next.for_each([&](int f) {
       Set after_f;
       if(reduce)
