@@ -13,8 +13,8 @@
 #
 #   adversarial_orders.sh [SIZES [READING [SETS [SEARCH [MAX_STATES]]]]]
 #
-# SEARCH "effective" runs the search over changing visits (--effective:
-# next-cycle readings only; the same answers, much faster from 7 points on);
+# SEARCH "effective" runs the search over changing visits (--effective: the
+# same answers, much faster from 7 points on);
 # MAX_STATES (default 20000) bounds the states per start.
 # Defaults: sizes "5 6", all 36 readings ("next-cycle" or "same-cycle" for
 # 18 of them), sets 1-40 (3 minutes on one core). At 7 points a start takes

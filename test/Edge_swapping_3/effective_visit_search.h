@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The adversarial order class of adversarial_search.h on starts too large for
-// it (more than 9 points), for the readings that visit made facets in the next
-// cycle. The question is the same: every state (cells and tags) at a cycle's
-// end that some sequence of orders reaches, and from each whether a cycle can
-// end the run. Settled, it decides the uniformly random class too: a uniform
+// it (more than 9 points), under every reading. The question is the same:
+// every state (cells and tags) at a cycle's end that some sequence of orders
+// reaches, and from each whether a cycle can end the run. Settled, it decides the uniformly random class too: a uniform
 // random order gives every order a positive chance each cycle, so random
 // orders end the run with probability one exactly when an end stays reachable
 // from every state reached.
@@ -19,11 +18,14 @@
 // such sequence is an order: put each other facet at such a moment. A node of
 // a cycle's search is (cells, tags, the listed facets not visited yet, those
 // of them that have had no such moment yet, busy); the cycle may end at a node
-// where the last set is empty. The ends, and the fewest swaps of each, are the
+// where the last set is empty. With same-cycle readings the listed facets are
+// every vertex triple (the adversary's sweep gives each one turn): a triple
+// not there at the cycle's start has had its moment, and a facet made in the
+// cycle may be visited in it, once. The ends, and the fewest swaps of each, are the
 // same as when every order of the listed facets is tried, as
 // adversarial_search.h does; the test "Adversarial orders: the effective-visit
 // search reaches the same states, loops and answers as the adversarial search"
-// compares them start by start on 6 and 7 points.
+// compares them start by start on 6 points (every reading) and 7.
 //
 // With `reduce`, the partial-order reduction of adversarial_search.h: after a
 // changing visit h from node n, a facet g listed before h is not visited next
@@ -112,11 +114,17 @@ public:
   explicit Space(const nlohmann::json& header) : model_(header)
   {
     std::string reading = header.at("reading").get<std::string>();
-    if(reading.find("same-cycle") != std::string::npos)
-      throw std::invalid_argument("effective-visit search: next-cycle readings only");
     clear_tags_each_cycle_ = reading.rfind("cleared-each-cycle", 0) == 0;
     tags_outlive_cells_ = reading.rfind("never-cleared", 0) == 0;
     if(model_.points().size() > 4096) throw std::invalid_argument("effective-visit search: at most 4096 points");
+    // Same-cycle: a sweep gives every vertex triple a turn, so every triple is numbered now.
+    if(model_.visits_made_facets())
+    {
+      const std::size_t n = model_.points().size();
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = i + 1; j < n; ++j)
+          for(std::size_t k = j + 1; k < n; ++k) all_triples_.set(facet_number(Facet{i, j, k}));
+    }
   }
 
   int cell_number(const Cell& t)
@@ -170,6 +178,9 @@ public:
 
   /// The interior facets of the cells: those in two of them.
   Set interior(const Set& cells) const { return adversarial_search::interior_facets(cells, cell_facets_); }
+  /// The facets a cycle from `cells` lists: those there at its start
+  /// (next-cycle), or every vertex triple (same-cycle: the adversary's sweep).
+  Set listed(const Set& cells) const { return model_.visits_made_facets() ? all_triples_ : interior(cells); }
 
   /// The tags at a cycle's start, as the reading says.
   Set round_start_tags(const Set& tags) const { return clear_tags_each_cycle_ ? Set() : tags; }
@@ -324,6 +335,7 @@ private:
   std::vector<std::vector<int>> facet_cells_;   // by facet number: the cells met that hold it
   std::vector<std::uint64_t> facet_points_;     // by facet number
   bool planar_met_ = false;
+  Set all_triples_; // same-cycle only
   std::unordered_map<std::uint64_t, int> cell_number_; // by pack()
   std::map<Facet, int> facet_number_;
   std::unordered_map<std::uint64_t, Local> decisions_;
@@ -627,7 +639,7 @@ private:
   {
     const Set cells = states_[u].first, tags = space_.round_start_tags(states_[u].second);
     Cycle_search<W> cycle{space_, max_nodes_, reduce_};
-    cycle.run(cells, tags, space_.interior(cells));
+    cycle.run(cells, tags, space_.listed(cells));
     return cycle;
   }
 
@@ -652,7 +664,7 @@ private:
     Cycle_search<W> cycle = cycle_from(u);
     const Set cells = states_[u].first, tags = space_.round_start_tags(states_[u].second);
     const auto& found = cycle.ends.at(std::make_tuple(states_[v].first, states_[v].second, true));
-    return whole_order(space_, cells, tags, space_.interior(cells), found.second);
+    return whole_order(space_, cells, tags, space_.listed(cells), found.second);
   }
 
   // The way back from t.to to u by fewest cycles (breadth first), as the
@@ -807,8 +819,8 @@ private:
   const std::vector<Edge> no_edges_;
 };
 
-/// The searches from `starts` (trace headers of the same points and reading,
-/// next-cycle), sharing one graph, each within `max_states` states at cycles'
+/// The searches from `starts` (trace headers of the same points and reading),
+/// sharing one graph, each within `max_states` states at cycles'
 /// ends and `max_nodes` nodes in one cycle's search (0: 64 x max_states).
 /// `progress(done, states, nodes)` is called after each state's cycle is searched.
 inline std::vector<Closure> search_all(const std::vector<nlohmann::json>& starts, std::size_t max_states,
