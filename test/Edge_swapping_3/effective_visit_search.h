@@ -204,50 +204,16 @@ public:
   Visit visit(const Set& cells, const Set& tags, int f)
   {
     Visit v{cells, tags};
-    int holders[2], found = 0;
-    for(int t : facet_cells_[std::size_t(f)])
-      if(cells.test(t))
-      {
-        if(found == 2) throw std::logic_error("a facet in three cells");
-        holders[found++] = t;
-      }
-    if(found < 2) return v;
-    const Facet& facet = facets_[std::size_t(f)];
-    std::size_t d = apex(holders[0], facet), e = apex(holders[1], facet);
-    if(CGAL::compare_xyz(model_.points()[e], model_.points()[d]) == CGAL::SMALLER) std::swap(d, e);
-    // The five points' cells: which are there and tagged.
-    const std::array<std::size_t, 5> five{facet[0], facet[1], facet[2], d, e};
-    std::uint64_t there = 0, tagged = 0;
-    for(int skip = 0; skip < 5; ++skip)
-    {
-      Cell t;
-      int m = 0;
-      for(int k = 0; k < 5; ++k)
-        if(k != skip) t[std::size_t(m++)] = five[std::size_t(k)];
-      std::sort(t.begin(), t.end());
-      const auto it = cell_number_.find(pack(t));
-      if(it != cell_number_.end() && cells.test(it->second))
-      {
-        there |= std::uint64_t(1) << skip;
-        if(tags.test(it->second)) tagged |= std::uint64_t(1) << skip;
-      }
-    }
-    const std::uint64_t key = (std::uint64_t(f) << 34) | (std::uint64_t(d) << 22) | (std::uint64_t(e) << 10) |
-                              (there << 5) | tagged;
-    v.footprint = point_bit(facet[0]) | point_bit(facet[1]) | point_bit(facet[2]) | point_bit(d) | point_bit(e);
-    auto it = decisions_.find(key);
-    if(it == decisions_.end())
-    {
-      Local local = decide(cells, tags, facet, d, e);
-      if(!local.local)
-      {
-        planar_met_ = true; // looks beyond the five points: not kept
-        v.footprint |= points_of(local.old_cells) | points_of(local.new_cells);
-        return apply(v, local);
-      }
-      it = decisions_.emplace(key, std::move(local)).first;
-    }
-    return apply(v, it->second);
+    const Local* r = decision(cells, tags, f, v.footprint);
+    return r ? apply(v, *r) : v;
+  }
+
+  /// Whether visiting facet number `f` changes the state (not there: no).
+  bool changes(const Set& cells, const Set& tags, int f)
+  {
+    std::uint64_t footprint;
+    const Local* r = decision(cells, tags, f, footprint);
+    return r && (r->swap || !r->new_tags.empty());
   }
 
   /// The points of facet number `f`, as bits (all bits with more than 64 points).
@@ -257,6 +223,63 @@ public:
   bool footprints_hold() const { return !planar_met_; }
 
 private:
+  struct Local
+  {
+    bool swap = false, local = true;
+    std::vector<int> old_cells, new_cells, new_tags;
+  };
+
+  // The decision of a visit of facet number `f`, and its footprint; null if
+  // the facet is not there. A planar decision is valid until the next call.
+  const Local* decision(const Set& cells, const Set& tags, int f, std::uint64_t& footprint)
+  {
+    int holders[2], found = 0;
+    for(int t : facet_cells_[std::size_t(f)])
+      if(cells.test(t))
+      {
+        if(found == 2) throw std::logic_error("a facet in three cells");
+        holders[found++] = t;
+      }
+    if(found < 2) return nullptr;
+    const Facet& facet = facets_[std::size_t(f)];
+    Five& five = five_of(holders[0], holders[1], facet);
+    const std::size_t d = five.d, e = five.e;
+    // The five points' cells: which are there and tagged.
+    if(five.cells_met != cells_.size()) // cells met since: look again for those not met
+    {
+      for(int skip = 0; skip < 5; ++skip)
+        if(five.cells[std::size_t(skip)] < 0) five.cells[std::size_t(skip)] = find_cell(five.points, skip);
+      five.cells_met = cells_.size();
+    }
+    std::uint64_t there = 0, tagged = 0;
+    for(int skip = 0; skip < 5; ++skip)
+    {
+      const int t = five.cells[std::size_t(skip)];
+      if(t >= 0 && cells.test(t))
+      {
+        there |= std::uint64_t(1) << skip;
+        if(tags.test(t)) tagged |= std::uint64_t(1) << skip;
+      }
+    }
+    const std::uint64_t key = (std::uint64_t(f) << 34) | (std::uint64_t(d) << 22) | (std::uint64_t(e) << 10) |
+                              (there << 5) | tagged;
+    footprint = point_bit(facet[0]) | point_bit(facet[1]) | point_bit(facet[2]) | point_bit(d) | point_bit(e);
+    auto it = decisions_.find(key);
+    if(it == decisions_.end())
+    {
+      Local local = decide(cells, tags, facet, d, e);
+      if(!local.local)
+      {
+        planar_met_ = true; // looks beyond the five points: not kept
+        footprint |= points_of(local.old_cells) | points_of(local.new_cells);
+        planar_ = std::move(local);
+        return &planar_;
+      }
+      it = decisions_.emplace(key, std::move(local)).first;
+    }
+    return &it->second;
+  }
+
   static std::uint64_t pack(const Cell& t)
   {
     return std::uint64_t(t[0]) | (std::uint64_t(t[1]) << 16) | (std::uint64_t(t[2]) << 32) | (std::uint64_t(t[3]) << 48);
@@ -273,11 +296,41 @@ private:
     return model_.points().size() > 64 ? ~std::uint64_t(0) : std::uint64_t(1) << v;
   }
 
-  struct Local
+  // The five points of a facet and the apexes of its two cells (the facet's
+  // points, then d, e as the checker orders them), and the number of the cell
+  // without each of them, -1 while not met: a visit then looks up no cell.
+  struct Five
   {
-    bool swap = false, local = true;
-    std::vector<int> old_cells, new_cells, new_tags;
+    std::size_t d, e;
+    std::array<std::size_t, 5> points;
+    std::array<int, 5> cells;
+    std::size_t cells_met; // how many cells were met when `cells` was looked up
   };
+  Five& five_of(int c, int c2, const Facet& facet)
+  {
+    const std::uint64_t key = (std::uint64_t(std::min(c, c2)) << 32) | std::uint64_t(std::max(c, c2));
+    auto it = fives_.find(key);
+    if(it != fives_.end()) return it->second;
+    Five five;
+    five.d = apex(c, facet);
+    five.e = apex(c2, facet);
+    if(CGAL::compare_xyz(model_.points()[five.e], model_.points()[five.d]) == CGAL::SMALLER) std::swap(five.d, five.e);
+    five.points = {facet[0], facet[1], facet[2], five.d, five.e};
+    for(int skip = 0; skip < 5; ++skip) five.cells[std::size_t(skip)] = find_cell(five.points, skip);
+    five.cells_met = cells_.size();
+    return fives_.emplace(key, five).first->second;
+  }
+  // The number of the cell of `five` without point number `skip`, or -1.
+  int find_cell(const std::array<std::size_t, 5>& five, int skip) const
+  {
+    Cell t;
+    int m = 0;
+    for(int k = 0; k < 5; ++k)
+      if(k != skip) t[std::size_t(m++)] = five[std::size_t(k)];
+    std::sort(t.begin(), t.end());
+    const auto it = cell_number_.find(pack(t));
+    return it == cell_number_.end() ? -1 : it->second;
+  }
 
   std::size_t apex(int cell, const Facet& f) const
   {
@@ -339,6 +392,8 @@ private:
   std::unordered_map<std::uint64_t, int> cell_number_; // by pack()
   std::map<Facet, int> facet_number_;
   std::unordered_map<std::uint64_t, Local> decisions_;
+  Local planar_; // the last planar decision
+  std::unordered_map<std::uint64_t, Five> fives_; // by the two cells' numbers
 };
 
 // Every end of one cycle from a state at its start: the state, whether the
@@ -384,7 +439,7 @@ struct Cycle_search
   {
     Set out;
     among.for_each([&](int f) {
-      if(space.visit(cells, tags, f).effective) out.set(f);
+      if(space.changes(cells, tags, f)) out.set(f);
     });
     return out;
   }
@@ -406,7 +461,7 @@ struct Cycle_search
     const bool filter = space.footprints_hold();
     s.left.for_each([&](int g) {
       if(filter && __builtin_popcountll(space.facet_points(g) & s.visit.footprint) < 2) return;
-      if(space.visit(s.visit.cells, s.visit.tags, g).effective) s.active.set(g);
+      if(space.changes(s.visit.cells, s.visit.tags, g)) s.active.set(g);
       else s.active.reset(g);
     });
     s.owed = s.owed.intersection(s.active); // not there or inert now: its moment
@@ -502,7 +557,7 @@ std::vector<Facet> whole_order(Space<W>& space, Bits<W> cells, Bits<W> tags, Bit
     Bits<W> later;
     for(std::size_t j = k; j < changing.size(); ++j) later.set(changing[j]);
     left.minus(later).for_each([&](int f) {
-      if(space.visit(cells, tags, f).effective) return;
+      if(space.changes(cells, tags, f)) return;
       order.push_back(space.facet(f));
       left.reset(f);
     });
@@ -550,7 +605,8 @@ public:
     const Checker model(start);
     const std::size_t root = number(space_.cell_set(model.cells()), space_.cell_set(model.tags()));
     // Breadth first from the start, each state's cycle searched once for all starts.
-    std::unordered_map<std::size_t, std::size_t> parent{{root, root}};
+    std::vector<std::size_t> parent(states_.size(), none_); // state -> the state it was reached from
+    parent[root] = root;
     std::vector<std::size_t> reached{root};
     const std::size_t nodes_before = nodes_;
     try
@@ -559,9 +615,11 @@ public:
       {
         const std::size_t u = reached[k];
         expand(u);
+        parent.resize(states_.size(), none_);
         for(const Edge& t : out_[u])
-          if(parent.emplace(t.to, u).second)
+          if(parent[t.to] == none_)
           {
+            parent[t.to] = u;
             reached.push_back(t.to);
             if(reached.size() > max_states) throw Search_limit_reached();
           }
@@ -584,21 +642,26 @@ public:
     if(result.settled)
     {
       // The states of the start's graph from which an end can be reached: backwards from those that can end.
-      std::unordered_map<std::size_t, std::vector<std::size_t>> into;
+      std::vector<std::vector<std::size_t>> into(states_.size());
       for(std::size_t u : reached)
         for(const Edge& t : out_[u]) into[t.to].push_back(u);
-      std::unordered_map<std::size_t, char> reaches;
+      std::vector<char> reaches(states_.size(), 0);
       std::vector<std::size_t> stack;
       for(std::size_t u : reached)
         if(can_end_[u]) reaches[u] = 1, stack.push_back(u);
+      result.states_reaching_end = stack.size();
       while(!stack.empty())
       {
         const std::size_t v = stack.back();
         stack.pop_back();
         for(std::size_t u : into[v])
-          if(reaches.emplace(u, 1).second) stack.push_back(u);
+          if(!reaches[u])
+          {
+            reaches[u] = 1;
+            ++result.states_reaching_end;
+            stack.push_back(u);
+          }
       }
-      result.states_reaching_end = reaches.size();
       result.ends_with_probability_one = result.states_reaching_end == reached.size();
     }
     find_loop(result, start, root, reached, parent);
@@ -692,19 +755,19 @@ private:
   // The strongly connected components of the graph of `reached` (closed
   // under transitions: every state a transition of a searched state goes to
   // is in it), by Tarjan's algorithm without recursion: state -> component.
-  std::unordered_map<std::size_t, std::size_t> components(const std::vector<std::size_t>& reached) const
+  std::vector<std::size_t> components(const std::vector<std::size_t>& reached) const
   {
-    std::unordered_map<std::size_t, std::size_t> index, low, component;
+    std::vector<std::size_t> index(states_.size(), none_), low(states_.size()), component(states_.size(), none_);
     std::vector<std::size_t> stack;
-    std::unordered_set<std::size_t> on_stack;
+    std::vector<char> on_stack(states_.size(), 0);
     std::size_t next_index = 0, next_component = 0;
     for(std::size_t root : reached)
     {
-      if(index.count(root)) continue;
+      if(index[root] != none_) continue;
       std::vector<std::pair<std::size_t, std::size_t>> calls{{root, 0}}; // state, next edge
       index[root] = low[root] = next_index++;
       stack.push_back(root);
-      on_stack.insert(root);
+      on_stack[root] = 1;
       while(!calls.empty())
       {
         auto& [v, k] = calls.back();
@@ -712,14 +775,14 @@ private:
         if(k < edges.size())
         {
           const std::size_t w = edges[k++].to;
-          if(!index.count(w))
+          if(index[w] == none_)
           {
             index[w] = low[w] = next_index++;
             stack.push_back(w);
-            on_stack.insert(w);
+            on_stack[w] = 1;
             calls.emplace_back(w, 0);
           }
-          else if(on_stack.count(w))
+          else if(on_stack[w])
             low[v] = std::min(low[v], index[w]);
           continue;
         }
@@ -730,7 +793,7 @@ private:
           {
             w = stack.back();
             stack.pop_back();
-            on_stack.erase(w);
+            on_stack[w] = 0;
             component[w] = next_component;
           } while(w != v);
           ++next_component;
@@ -754,11 +817,11 @@ private:
   // at most 2,000 states, the one with the fewest swaps (its way back by
   // fewest cycles); otherwise the first found.
   void find_loop(Closure& result, const nlohmann::json& start, std::size_t root, const std::vector<std::size_t>& reached,
-                 const std::unordered_map<std::size_t, std::size_t>& parent)
+                 const std::vector<std::size_t>& parent)
   {
     result.fewest_swaps_searched = reached.size() <= 2000;
     constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
-    const std::unordered_map<std::size_t, std::size_t> component = components(reached);
+    const std::vector<std::size_t> component = components(reached);
     std::size_t best = none, best_u = 0, best_k = 0;
     for(std::size_t u : reached)
     {
@@ -767,7 +830,7 @@ private:
       {
         const Edge& t = out_[u][k];
         // A transition is on a loop exactly when it stays in its strongly connected component.
-        if(t.swaps == 0 || !expanded(t.to) || component.at(u) != component.at(t.to)) continue;
+        if(t.swaps == 0 || !expanded(t.to) || component[u] != component[t.to]) continue;
         const auto key = std::make_pair(u, k);
         auto known = loop_swaps_.find(key);
         if(known == loop_swaps_.end())
@@ -790,7 +853,7 @@ private:
     if(best == none) return;
     const std::vector<std::size_t> cycle = way_back(best_u, out_[best_u][best_k]);
     std::vector<std::vector<Facet>> lead; // the start -> u
-    for(std::size_t x = best_u; x != root; x = parent.at(x)) lead.insert(lead.begin(), order_between(parent.at(x), x));
+    for(std::size_t x = best_u; x != root; x = parent[x]) lead.insert(lead.begin(), order_between(parent[x], x));
     std::vector<std::vector<Facet>> loop;
     for(std::size_t k = 0; k + 1 < cycle.size(); ++k) loop.push_back(order_between(cycle[k], cycle[k + 1]));
     std::vector<std::vector<Facet>> path = lead;
@@ -817,6 +880,7 @@ private:
   std::vector<char> can_end_, can_end_off_delaunay_, expanded_;
   std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, Pair_hash> loop_swaps_; // (u, k) -> swaps of its loop
   const std::vector<Edge> no_edges_;
+  static constexpr std::size_t none_ = std::numeric_limits<std::size_t>::max();
 };
 
 /// The searches from `starts` (trace headers of the same points and reading),
