@@ -47,6 +47,7 @@
 #define EDGE_SWAPPING_3_TEST_EFFECTIVE_VISIT_SEARCH_H
 
 #include "adversarial_search.h"
+#include <deque>
 #include <functional>
 
 namespace effective_visit_search {
@@ -157,6 +158,7 @@ public:
       if(facets_.size() >= std::size_t(64 * W)) throw Too_many_numbers();
       facets_.push_back(f);
       facet_cells_.emplace_back();
+      facet_fives_.emplace_back();
       facet_points_.push_back(point_bit(f[0]) | point_bit(f[1]) | point_bit(f[2]));
     }
     return it->second;
@@ -242,7 +244,7 @@ private:
       }
     if(found < 2) return nullptr;
     const Facet& facet = facets_[std::size_t(f)];
-    Five& five = five_of(holders[0], holders[1], facet);
+    Five& five = five_of(holders[0], holders[1], f);
     const std::size_t d = five.d, e = five.e;
     // The five points' cells: which are there and tagged.
     if(five.cells_met != cells_.size()) // cells met since: look again for those not met
@@ -261,23 +263,21 @@ private:
         if(tags.test(t)) tagged |= std::uint64_t(1) << skip;
       }
     }
-    const std::uint64_t key = (std::uint64_t(f) << 34) | (std::uint64_t(d) << 22) | (std::uint64_t(e) << 10) |
-                              (there << 5) | tagged;
+    const std::uint16_t key = std::uint16_t((there << 5) | tagged);
     footprint = point_bit(facet[0]) | point_bit(facet[1]) | point_bit(facet[2]) | point_bit(d) | point_bit(e);
-    auto it = decisions_.find(key);
-    if(it == decisions_.end())
+    for(const auto& [k, local] : five.decided)
+      if(k == key) return &decisions_[local];
+    Local local = decide(cells, tags, facet, d, e);
+    if(!local.local)
     {
-      Local local = decide(cells, tags, facet, d, e);
-      if(!local.local)
-      {
-        planar_met_ = true; // looks beyond the five points: not kept
-        footprint |= points_of(local.old_cells) | points_of(local.new_cells);
-        planar_ = std::move(local);
-        return &planar_;
-      }
-      it = decisions_.emplace(key, std::move(local)).first;
+      planar_met_ = true; // looks beyond the five points: not kept
+      footprint |= points_of(local.old_cells) | points_of(local.new_cells);
+      planar_ = std::move(local);
+      return &planar_;
     }
-    return &it->second;
+    five.decided.emplace_back(key, decisions_.size());
+    decisions_.push_back(std::move(local));
+    return &decisions_.back();
   }
 
   static std::uint64_t pack(const Cell& t)
@@ -305,12 +305,17 @@ private:
     std::array<std::size_t, 5> points;
     std::array<int, 5> cells;
     std::size_t cells_met; // how many cells were met when `cells` was looked up
+    // The decisions made, by which of the cells are there and tagged (bits by
+    // point left out): the facet and its apexes are the five's.
+    std::vector<std::pair<std::uint16_t, std::size_t>> decided;
   };
-  Five& five_of(int c, int c2, const Facet& facet)
+  // The five of facet number `f` between cells c and c2.
+  Five& five_of(int c, int c2, int f)
   {
     const std::uint64_t key = (std::uint64_t(std::min(c, c2)) << 32) | std::uint64_t(std::max(c, c2));
-    auto it = fives_.find(key);
-    if(it != fives_.end()) return it->second;
+    for(const auto& [k, five] : facet_fives_[std::size_t(f)])
+      if(k == key) return fives_[five];
+    const Facet& facet = facets_[std::size_t(f)];
     Five five;
     five.d = apex(c, facet);
     five.e = apex(c2, facet);
@@ -318,7 +323,9 @@ private:
     five.points = {facet[0], facet[1], facet[2], five.d, five.e};
     for(int skip = 0; skip < 5; ++skip) five.cells[std::size_t(skip)] = find_cell(five.points, skip);
     five.cells_met = cells_.size();
-    return fives_.emplace(key, five).first->second;
+    facet_fives_[std::size_t(f)].emplace_back(key, fives_.size());
+    fives_.push_back(std::move(five));
+    return fives_.back();
   }
   // The number of the cell of `five` without point number `skip`, or -1.
   int find_cell(const std::array<std::size_t, 5>& five, int skip) const
@@ -391,9 +398,10 @@ private:
   Set all_triples_; // same-cycle only
   std::unordered_map<std::uint64_t, int> cell_number_; // by pack()
   std::map<Facet, int> facet_number_;
-  std::unordered_map<std::uint64_t, Local> decisions_;
+  std::deque<Local> decisions_; // kept in place: visits hold them
   Local planar_; // the last planar decision
-  std::unordered_map<std::uint64_t, Five> fives_; // by the two cells' numbers
+  std::deque<Five> fives_;
+  std::vector<std::vector<std::pair<std::uint64_t, std::size_t>>> facet_fives_; // by facet: its two cells -> its five
 };
 
 // Every end of one cycle from a state at its start: the state, whether the
