@@ -2,10 +2,10 @@
 // The adversarial order class of adversarial_search.h on starts too large for
 // it (more than 9 points), under every reading. The question is the same:
 // every state (cells and tags) at a cycle's end that some sequence of orders
-// reaches, and from each whether a cycle can end the run. Settled, it decides the uniformly random class too: a uniform
-// random order gives every order a positive chance each cycle, so random
-// orders end the run with probability one exactly when an end stays reachable
-// from every state reached.
+// reaches, and from each whether a cycle can end the run. Settled, it decides
+// the uniformly random class too: a uniform random order gives every order a
+// positive chance each cycle, so random orders end the run with probability
+// one exactly when an end stays reachable from every state reached.
 //
 // What makes larger starts searchable: the search branches only on the visits
 // that change the state (a swap or a new tag). A visit that changes nothing
@@ -21,8 +21,8 @@
 // where the last set is empty. With same-cycle readings the listed facets are
 // every vertex triple (the adversary's sweep gives each one turn): a triple
 // not there at the cycle's start has had its moment, and a facet made in the
-// cycle may be visited in it, once. The ends, and the fewest swaps of each, are the
-// same as when every order of the listed facets is tried, as
+// cycle may be visited in it, once. The ends, and the fewest swaps of each,
+// are the same as when every order of the listed facets is tried, as
 // adversarial_search.h does; the test "Adversarial orders: the effective-visit
 // search reaches the same states, loops and answers as the adversarial search"
 // compares them start by start on 6 points (every reading) and 7.
