@@ -65,8 +65,9 @@ int main(int argc, char** argv)
     std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]\n";
     return 2;
   }
-  // A whole number, or false (not digits, or too large).
-  auto whole_number = [](const std::string& text, std::size_t& value) {
+  // A whole number up to `most`, or false (not digits, or too large).
+  auto whole_number = [](const std::string& text, std::size_t& value,
+                         std::size_t most = std::numeric_limits<std::size_t>::max()) {
     if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
     try
     {
@@ -76,8 +77,9 @@ int main(int argc, char** argv)
     {
       return false;
     }
-    return true;
+    return value <= most;
   };
+  const std::size_t most_seed = std::numeric_limits<unsigned>::max();
   const std::string source = argv[1];
   std::vector<K::Point_3> points;
   std::vector<std::vector<std::array<std::size_t, 4>>> starts;
@@ -86,9 +88,9 @@ int main(int argc, char** argv)
     if(ch == ':') part.emplace_back();
     else part.back() += ch;
   std::size_t n = 0, seed = 0;
-  if(part[0] == "random-integer" && part.size() == 3 && whole_number(part[1], n) && whole_number(part[2], seed))
+  if(part[0] == "random-integer" && part.size() == 3 && whole_number(part[1], n) && whole_number(part[2], seed, most_seed))
     points = ES::point_families::random_integer<K::Point_3>(n, unsigned(seed));
-  else if(part[0] == "family" && part.size() == 4 && whole_number(part[2], n) && whole_number(part[3], seed))
+  else if(part[0] == "family" && part.size() == 4 && whole_number(part[2], n) && whole_number(part[3], seed, most_seed))
   {
     try
     {
