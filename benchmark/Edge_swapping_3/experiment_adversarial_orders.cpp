@@ -6,7 +6,7 @@
 // readings, the order of the cycle's sweep through all vertex triples). Is
 // there a choice of orders under which the helper strategy never ends?
 //
-//   experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING MAX_STATES [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
 // experiment_priority_loops), whose every TOPCOM triangulation is a start, or
@@ -31,6 +31,12 @@
 // start. It prints the states from which an end can be reached, and
 // one line of progress to standard error for each of the first 10 states,
 // then every 100.
+// With --tag-bounds no order is searched: test/Edge_swapping_3/tag_bound_closure.h
+// finds the least set of triangulations, each with a bound on its tags, that
+// holds the start and is closed under every visit (MAX_STATES: at most that
+// many triangulations). When CGAL's triangulation is not in it, no order at
+// all reaches CGAL's triangulation from that start; TRACE then receives the
+// certificate of the first such start, which check_tag_bounds.py checks.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -39,6 +45,7 @@
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "adversarial_search.h"
 #include "effective_visit_search.h"
+#include "tag_bound_closure.h"
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -54,15 +61,15 @@ using adversarial_search::Loop_found;
 int main(int argc, char** argv)
 {
   const std::string flag = argc > 1 ? argv[1] : "";
-  const bool reduce = flag == "--reduce", effective = flag == "--effective";
-  if(reduce || effective)
+  const bool reduce = flag == "--reduce", effective = flag == "--effective", tag_bounds = flag == "--tag-bounds";
+  if(reduce || effective || tag_bounds)
   {
     --argc;
     ++argv;
   }
   if(argc != 4 && argc != 5)
   {
-    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective] SOURCE READING MAX_STATES [TRACE]\n";
+    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING MAX_STATES [TRACE]\n";
     return 2;
   }
   // A whole number up to `most`, or false (not digits, or too large).
@@ -168,6 +175,25 @@ int main(int argc, char** argv)
       for(const auto& c : start) cells.push_back({c[0], c[1], c[2], c[3]});
       h["cells"] = cells;
       headers.push_back(h);
+    }
+    if(tag_bounds)
+    {
+      std::size_t closed = 0, unreached = 0;
+      for(std::size_t t = 0; t < starts.size(); ++t)
+      {
+        const tag_bound_closure::Closure c = tag_bound_closure::search(headers[t], max_states);
+        std::cout << "start " << t << ": " << c.bounds.size() << " triangulations" << (c.closed ? "" : " (not closed)")
+                  << ", " << c.delaunay << " of them CGAL's";
+        if(c.closed) std::cout << "; " << c.can_end << " with a state that ends the run under no-swap-no-tag";
+        std::cout << std::endl;
+        closed += c.closed;
+        if(!c.closed || c.delaunay > 0) continue;
+        if(argc == 5 && unreached == 0) std::ofstream(argv[4]) << tag_bound_closure::certificate(headers[t], c).dump() << '\n';
+        ++unreached;
+      }
+      std::cout << "reading " << ES::helper_reading_name(reading) << ": " << starts.size() << " starts, " << closed
+                << " closed, no order reaches CGAL's triangulation from " << unreached << "\n";
+      continue;
     }
     // The changing-visit search shares one graph of states among the starts.
     std::vector<effective_visit_search::Closure> closures;

@@ -9,6 +9,7 @@
 #include "trace_checker.h"
 #include "adversarial_search.h"
 #include "effective_visit_search.h"
+#include "tag_bound_closure.h"
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
@@ -1276,6 +1277,14 @@ TEST_CASE("Adversarial orders: the effective-visit search reaches the same state
           REQUIRE(changing.ends_with_probability_one == all_orders.ends_with_probability_one);
           if(changing.ends_with_probability_one) REQUIRE(changing.states_reaching_end == changing.states);
           REQUIRE(changing.can_end_off_delaunay == all_orders.can_end_off_delaunay);
+          // The tag-bound closure holds every state that any order reaches: CGAL's
+          // triangulation when every end reached is there, and under
+          // no-swap-no-tag a state that ends the run when one is reached.
+          const auto bounds = tag_bound_closure::search(h, 100000);
+          REQUIRE(bounds.closed);
+          if(changing.ends_with_probability_one && !changing.can_end_off_delaunay) REQUIRE(bounds.delaunay == 1);
+          if(changing.states_that_can_end > 0 && reading.cycle_ending == ES::NO_SWAP_AND_NO_NEW_TAG)
+            REQUIRE(bounds.can_end > 0);
           nodes += all_orders.nodes;
           effective_nodes += changing.nodes;
           if(changing.loop)
@@ -1313,6 +1322,65 @@ TEST_CASE("Adversarial orders: the effective-visit search reaches the same state
   REQUIRE(states == 50);
   WARN(compared << " searches compared, " << loops << " with a loop; nodes searched: " << nodes
                 << " over every order, " << effective_nodes << " over the changing visits");
+}
+
+TEST_CASE("The 25-point trap: no order at all reaches CGAL's triangulation under the 24 readings whose tags go with their cells",
+          "[conjectures][traces]")
+{
+  // tag_bound_closure.h: 168 triangulations, each with a bound on its tags,
+  // closed under every visit; none is CGAL's triangulation, and under
+  // no-swap-no-tag no state of it ends the run (conjectures.md, "No order
+  // reaches CGAL's triangulation from the 25-point trap").
+  const auto c = load_case("helper_random_order_trap_25_points.json");
+  std::size_t readings = 0;
+  std::string kept;
+  for(const auto& reading : ES::all_helper_readings())
+  {
+    if(reading.tag_lifetime == ES::TAGS_NEVER_CLEARED) continue;
+    INFO(ES::helper_reading_name(reading));
+    const auto h = adversarial_header(c.points, c.cells, reading);
+    const auto bounds = tag_bound_closure::search(h, 10000);
+    REQUIRE(bounds.closed);
+    REQUIRE(bounds.bounds.size() == 168);
+    REQUIRE(bounds.delaunay == 0);
+    REQUIRE(bounds.can_end == 0);
+    if(ES::helper_reading_name(reading) == "until-destroyed,any-tetrahedron,no-swap-no-tag")
+      kept = tag_bound_closure::certificate(h, bounds).dump() + '\n';
+    ++readings;
+  }
+  REQUIRE(readings == 24);
+  // The kept certificate, which check_tag_bounds.py checks (ctest tag_bound_certificate), byte for byte.
+  REQUIRE(kept == test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/trap_25_points_tag_bounds.json"));
+
+  // Runs stay in it: random order, seed 1, every state after every visit, under two readings.
+  for(const std::string name : {"until-destroyed,pass-over,no-swap-no-tag", "cleared-each-cycle,any-tetrahedron,no-swap,same-cycle"})
+  {
+    INFO(name);
+    auto run = c;
+    run.seed = 1;
+    run.max_cycles = 100;
+    REQUIRE(ES::helper_reading_from_name(name, run.reading));
+    std::ostringstream trace;
+    ES::trace_conjecture_case(run, trace);
+    const auto bounds = tag_bound_closure::search(adversarial_header(c.points, c.cells, run.reading), 10000);
+    std::istringstream in(trace.str());
+    std::string text;
+    std::getline(in, text);
+    trace_checker::Checker model(nlohmann::json::parse(text));
+    trace_checker::Result result;
+    std::size_t states = 0, outside = 0;
+    while(std::getline(in, text))
+    {
+      model.line(nlohmann::json::parse(text), result);
+      const auto it = bounds.bounds.find(model.cells());
+      if(it == bounds.bounds.end() ||
+         !std::includes(it->second.begin(), it->second.end(), model.tags().begin(), model.tags().end()))
+        ++outside;
+      ++states;
+    }
+    REQUIRE(states > 10000);
+    REQUIRE(outside == 0);
+  }
 }
 
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
