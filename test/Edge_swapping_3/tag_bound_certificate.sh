@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# check_tag_bounds.py (a ctest test): it certifies the kept certificate of the
-# 25-point trap, refuses altered ones (exit 1, naming what fails) and
+# check_tag_bounds.py (a ctest test): it certifies the kept certificates of the
+# 25- and 12-point traps, refuses altered ones (exit 1, naming what fails) and
 # unreadable files (exit 2), and survives mutated files.
 #
 #   tag_bound_certificate.sh SOURCE_DIR WORK_DIR [FUZZ_SEED]
@@ -19,9 +19,12 @@ fail() {
   exit 1
 }
 
-python3 "$checker" "$kept" > "$work/out.txt" || fail "the kept certificate: exit $?"
-grep -qF "certified: 168 triangulations, closed under every visit; none is CGAL's triangulation" "$work/out.txt" ||
-  fail "the kept certificate: $(cat "$work/out.txt")"
+for certified in "trap_25_points_tag_bounds.json 168" "trap_12_points_tag_bounds.json 2"; do
+  set -- $certified
+  python3 "$checker" "$here/fixtures/$1" > "$work/out.txt" || fail "$1: exit $?"
+  grep -qF "certified: $2 triangulations, closed under every visit; none is CGAL's triangulation; no state ends a run under no-swap-no-tag" "$work/out.txt" ||
+    fail "$1: $(cat "$work/out.txt")"
+done
 
 # expect STATUS MESSAGE FILE: the checker exits STATUS and says MESSAGE.
 expect() {
