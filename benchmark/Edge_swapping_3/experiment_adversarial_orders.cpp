@@ -36,7 +36,8 @@
 // holds the start and is closed under every visit (MAX_STATES: at most that
 // many triangulations). When CGAL's triangulation is not in it, no order at
 // all reaches CGAL's triangulation from that start; TRACE then receives the
-// certificate of the first such start, which check_tag_bounds.py checks.
+// certificate of the first such start (of the first reading that has one),
+// which check_tag_bounds.py checks.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -162,6 +163,7 @@ int main(int argc, char** argv)
   header["points"] = point_list;
   std::size_t best_swaps = std::numeric_limits<std::size_t>::max();
   std::string best_trace;
+  bool certificate_written = false; // --tag-bounds: once, for the first start found
   for(const ES::Helper_reading& reading : readings)
   {
     header["reading"] = ES::helper_reading_name(reading);
@@ -188,7 +190,17 @@ int main(int argc, char** argv)
         std::cout << std::endl;
         closed += c.closed;
         if(!c.closed || c.delaunay > 0) continue;
-        if(argc == 5 && unreached == 0) std::ofstream(argv[4]) << tag_bound_closure::certificate(headers[t], c).dump() << '\n';
+        if(argc == 5 && !certificate_written)
+        {
+          std::ofstream out(argv[4]);
+          out << tag_bound_closure::certificate(headers[t], c).dump() << '\n';
+          if(!out)
+          {
+            std::cerr << "experiment_adversarial_orders: " << argv[4] << ": cannot write the certificate\n";
+            return 2;
+          }
+          certificate_written = true;
+        }
         ++unreached;
       }
       std::cout << "reading " << ES::helper_reading_name(reading) << ": " << starts.size() << " starts, " << closed
