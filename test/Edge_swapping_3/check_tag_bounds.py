@@ -59,7 +59,9 @@ def read_certificate(path):
         raise Unreadable(f"cannot read it: {e.strerror}")
     except (json.JSONDecodeError, UnicodeDecodeError) as e:
         raise Unreadable(f"not JSON: {e}")
-    if not isinstance(c, dict) or c.get("format") != "Edge_swapping_3 tag-bound certificate" or c.get("version") != 1:
+    version = c.get("version") if isinstance(c, dict) else None
+    if (not isinstance(c, dict) or c.get("format") != "Edge_swapping_3 tag-bound certificate" or
+            type(version) is not int or version != 1):
         raise Unreadable("not a version 1 tag-bound certificate")
     for key in ("points", "start", "triangulations"):
         if not isinstance(c.get(key), list):

@@ -64,6 +64,7 @@ head='"format":"Edge_swapping_3 tag-bound certificate","version":1'
 four='[[0,0,0],[1,0,0],[0,1,0],[0,0,1]]'
 bad not_json '{"format": ' "not JSON"
 bad other_format '{"format":"Edge_swapping_3 visit trace","version":1}' "not a version 1 tag-bound certificate"
+bad version_true '{"format":"Edge_swapping_3 tag-bound certificate","version":true}' "not a version 1 tag-bound certificate"
 bad no_points "{$head,\"start\":[],\"triangulations\":[]}" "'points' is not a list"
 bad nan "{$head,\"points\":[[NaN,0,0],[1,0,0],[0,1,0],[0,0,1]],\"start\":[],\"triangulations\":[]}" "point 0 has a coordinate that is not finite"
 bad huge "{$head,\"points\":[[1e300,0,0],[1,0,0],[0,1,0],[0,0,1]],\"start\":[],\"triangulations\":[]}" "point 0 has a coordinate that is not finite or beyond 1e30"
