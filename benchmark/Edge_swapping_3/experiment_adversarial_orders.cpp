@@ -6,11 +6,13 @@
 // readings, the order of the cycle's sweep through all vertex triples). Is
 // there a choice of orders under which the helper strategy never ends?
 //
-//   experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders [--reduce | --effective | --tag-bounds | --traps] SOURCE READING MAX_STATES [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
-// experiment_priority_loops), whose every TOPCOM triangulation is a start, or
-// a case file (.json, start "cells"), whose cells are the one start; READING
+// experiment_priority_loops), whose every TOPCOM triangulation is a start, a
+// case file (.json, start "cells"), whose cells are the one start, or
+// topcom:CASE.json, every TOPCOM triangulation of a case file's points
+// (integer coordinates); READING
 // a reading of Algorithm 4, or "next-cycle" or "same-cycle" for the 18
 // readings with that visit of made facets, or "all" for the 36.
 //
@@ -38,6 +40,15 @@
 // all reaches CGAL's triangulation from that start; TRACE then receives the
 // certificate of the first such start (of the first reading that has one),
 // which check_tag_bounds.py checks.
+// With --traps the starts are streamed from TOPCOM (never all held) and each
+// start's tag-bound set is searched only until CGAL's triangulation joins it
+// (tag_bound_closure::search's stop_at_delaunay): a scan for traps, starts
+// from which no order at all reaches CGAL's triangulation. It prints each
+// trap found and, per reading, the starts whose set holds CGAL's
+// triangulation, the traps, and the starts undecided within MAX_STATES
+// triangulations; TRACE receives the certificate of the trap with the
+// fewest triangulations (the first of them). Progress goes to standard error
+// every 10,000 starts.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -59,18 +70,104 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 namespace ES = CGAL::Edge_swapping_3;
 using adversarial_search::Loop_found;
 
+namespace {
+
+// The trace header of a start under a reading, for the searches.
+nlohmann::json start_header(const std::vector<K::Point_3>& points, const std::vector<std::array<std::size_t, 4>>& cells,
+                            const ES::Helper_reading& reading)
+{
+  nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
+                   {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0}, {"max_rounds", 1000000}};
+  nlohmann::json point_list = nlohmann::json::array(), cell_list = nlohmann::json::array();
+  for(const auto& p : points) point_list.push_back({p.x(), p.y(), p.z()});
+  for(const auto& c : cells) cell_list.push_back({c[0], c[1], c[2], c[3]});
+  h["points"] = point_list;
+  h["cells"] = cell_list;
+  h["reading"] = ES::helper_reading_name(reading);
+  return h;
+}
+
+// --traps: every start (the given one, or TOPCOM's streamed) under every reading.
+int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<std::vector<std::array<std::size_t, 4>>>& given,
+                   const std::vector<ES::Helper_reading>& readings, std::size_t max_triangulations,
+                   const char* certificate_file)
+{
+  std::vector<std::size_t> reached(readings.size()), trapped(readings.size()), undecided(readings.size());
+  std::size_t starts = 0, fewest = std::numeric_limits<std::size_t>::max();
+  nlohmann::json best;
+  auto visit = [&](std::size_t index, const std::vector<std::array<std::size_t, 4>>& cells) {
+    for(std::size_t r = 0; r < readings.size(); ++r)
+    {
+      const nlohmann::json h = start_header(points, cells, readings[r]);
+      const tag_bound_closure::Closure c = tag_bound_closure::search(h, max_triangulations, true);
+      if(c.delaunay > 0)
+      {
+        ++reached[r];
+        continue;
+      }
+      if(!c.closed)
+      {
+        ++undecided[r];
+        continue;
+      }
+      ++trapped[r];
+      std::cout << "start " << index << ": a trap under " << ES::helper_reading_name(readings[r]) << ", "
+                << c.bounds.size() << " triangulations, " << c.can_end
+                << " with a state that ends the run under no-swap-no-tag" << std::endl;
+      if(c.bounds.size() < fewest)
+      {
+        fewest = c.bounds.size();
+        best = tag_bound_closure::certificate(h, c);
+      }
+    }
+    if(++starts % 10000 == 0) std::cerr << starts << " starts scanned\n";
+    return true;
+  };
+  try
+  {
+    if(!given.empty())
+      for(std::size_t t = 0; t < given.size(); ++t) visit(t, given[t]);
+    else
+      ES::IO::for_each_topcom_triangulation(points, std::numeric_limits<std::size_t>::max(), visit);
+  }
+  catch(const std::exception& e) // TOPCOM missing or failing, points TOPCOM cannot read
+  {
+    std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
+    return 2;
+  }
+  std::cout << points.size() << " points, " << starts << " starts\n";
+  for(std::size_t r = 0; r < readings.size(); ++r)
+    std::cout << "reading " << ES::helper_reading_name(readings[r]) << ": " << starts << " starts, " << reached[r]
+              << " reach CGAL's triangulation, " << undecided[r] << " undecided, traps " << trapped[r] << "\n";
+  if(certificate_file && !best.is_null())
+  {
+    std::ofstream out(certificate_file);
+    out << best.dump() << '\n';
+    if(!out)
+    {
+      std::cerr << "experiment_adversarial_orders: " << certificate_file << ": cannot write the certificate\n";
+      return 2;
+    }
+  }
+  return 0;
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
   const std::string flag = argc > 1 ? argv[1] : "";
-  const bool reduce = flag == "--reduce", effective = flag == "--effective", tag_bounds = flag == "--tag-bounds";
-  if(reduce || effective || tag_bounds)
+  const bool reduce = flag == "--reduce", effective = flag == "--effective", tag_bounds = flag == "--tag-bounds",
+             traps = flag == "--traps";
+  if(reduce || effective || tag_bounds || traps)
   {
     --argc;
     ++argv;
   }
   if(argc != 4 && argc != 5)
   {
-    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING MAX_STATES [TRACE]\n";
+    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective | --tag-bounds | --traps] SOURCE READING "
+                 "MAX_STATES [TRACE]\n";
     return 2;
   }
   // A whole number up to `most`, or false (not digits, or too large).
@@ -112,22 +209,29 @@ int main(int argc, char** argv)
   }
   else if(source.size() > 5 && source.compare(source.size() - 5, 5, ".json") == 0)
   {
+    // topcom:CASE.json takes the points only; CASE.json its start as well.
+    const bool all_triangulations = source.rfind("topcom:", 0) == 0;
+    const std::string file = all_triangulations ? source.substr(7) : source;
     try
     {
-      const ES::Conjecture_case<K::Point_3> c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
-      if(c.start != ES::GIVEN_CELLS_START) throw std::runtime_error("its start is not \"cells\"");
+      const ES::Conjecture_case<K::Point_3> c = ES::IO::read_conjecture_case_file<K::Point_3>(file);
       points = c.points;
-      starts.push_back(c.cells);
+      if(!all_triangulations)
+      {
+        if(c.start != ES::GIVEN_CELLS_START) throw std::runtime_error(file + ": its start is not \"cells\"");
+        starts.push_back(c.cells);
+      }
     }
-    catch(const std::exception& e)
+    catch(const std::exception& e) // the reader's messages name the file
     {
-      std::cerr << "experiment_adversarial_orders: " << source << ": " << e.what() << '\n';
+      std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
       return 2;
     }
   }
   else
   {
-    std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET, family:NAME:N:SEED or a case file (.json)\n";
+    std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET, family:NAME:N:SEED, a case file (.json) "
+                 "or topcom:CASE.json\n";
     return 2;
   }
   std::vector<ES::Helper_reading> readings;
@@ -153,31 +257,31 @@ int main(int argc, char** argv)
     std::cerr << "experiment_adversarial_orders: MAX_STATES is a whole number above 0, not '" << argv[3] << "'\n";
     return 2;
   }
+  if(!starts.empty()) // a case file's start: a triangulation of its points, or an error naming the file
+  {
+    try
+    {
+      trace_checker::Checker check(start_header(points, starts.front(), readings.front()));
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "experiment_adversarial_orders: " << source << ": its cells are not a triangulation of its points: "
+                << e.what() << '\n';
+      return 2;
+    }
+  }
+  if(traps) return scan_for_traps(points, starts, readings, max_states, argc == 5 ? argv[4] : nullptr);
   if(starts.empty()) starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
   std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " triangulations\n");
-  nlohmann::json header{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
-                        {"schedule", "cycles"}, {"order", "adversarial"}, {"seed", 0},
-                        {"max_rounds", 1000000}};
-  nlohmann::json point_list = nlohmann::json::array();
-  for(const auto& p : points) point_list.push_back({p.x(), p.y(), p.z()});
-  header["points"] = point_list;
   std::size_t best_swaps = std::numeric_limits<std::size_t>::max();
   std::string best_trace;
   bool certificate_written = false; // --tag-bounds: once, for the first start found
   for(const ES::Helper_reading& reading : readings)
   {
-    header["reading"] = ES::helper_reading_name(reading);
     std::size_t settled = 0, loops = 0, states = 0, fewest = std::numeric_limits<std::size_t>::max(), fewest_cycles = 0;
     std::size_t surely = 0, off_delaunay = 0;
     std::vector<nlohmann::json> headers;
-    for(const auto& start : starts)
-    {
-      nlohmann::json h = header;
-      nlohmann::json cells = nlohmann::json::array();
-      for(const auto& c : start) cells.push_back({c[0], c[1], c[2], c[3]});
-      h["cells"] = cells;
-      headers.push_back(h);
-    }
+    for(const auto& start : starts) headers.push_back(start_header(points, start, reading));
     if(tag_bounds)
     {
       std::size_t closed = 0, unreached = 0;

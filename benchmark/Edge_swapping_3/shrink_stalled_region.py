@@ -130,6 +130,9 @@ def shrink_tag_bounds(source, out):
         cells = [[int(v) for v in c] for c in case["cells"]]
     except (OSError, ValueError, KeyError, TypeError) as e:
         region.fail(f"{source}: not a case file with its cells: {e}")
+    first = subprocess.run([program, "--tag-bounds", source, reading, "20000"], capture_output=True, text=True)
+    if first.returncode != 0:  # the program's own reason: points it refuses, cells that are no triangulation
+        region.fail(first.stderr.strip() or f"{source}: {program} ended with {first.returncode}")
     if not trapped(source):
         region.fail(f"{source}: its tag-bound set holds CGAL's triangulation (or does not close): nothing to keep")
     t0 = time.time()

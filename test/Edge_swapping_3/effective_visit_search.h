@@ -196,7 +196,7 @@ public:
   struct Visit
   {
     Set cells, tags;
-    bool swap = false, changed = false, effective = false;
+    bool swap = false, changed = false;
     // The points of the cells the visit reads and writes: a facet with fewer
     // than two of its points among them reads nothing the visit changes.
     std::uint64_t footprint = 0;
@@ -382,7 +382,6 @@ private:
       for(int t : r.new_cells) v.cells.set(t);
     }
     v.swap = r.swap;
-    v.effective = r.swap || !r.new_tags.empty();
     v.changed = r.swap || (!r.new_tags.empty() && !model_.ends_without_swap());
     return v;
   }
@@ -570,8 +569,8 @@ std::vector<Facet> whole_order(Space<W>& space, Bits<W> cells, Bits<W> tags, Bit
       left.reset(f);
     });
     if(k == changing.size()) break;
+    if(!space.changes(cells, tags, changing[k])) throw std::logic_error("a changing visit that changes nothing");
     const auto v = space.visit(cells, tags, changing[k]);
-    if(!v.effective) throw std::logic_error("a changing visit that changes nothing");
     order.push_back(space.facet(changing[k]));
     left.reset(changing[k]);
     cells = v.cells;

@@ -36,9 +36,10 @@
 #define EDGE_SWAPPING_3_TEST_TAG_BOUND_CLOSURE_H
 
 #include "trace_checker.h"
-#include <deque>
 #include <map>
+#include <queue>
 #include <set>
+#include <tuple>
 
 namespace tag_bound_closure {
 
@@ -87,22 +88,68 @@ inline bool has_inert_state(Checker& model, const Cells& cells, const Cells& bou
 } // namespace internal
 
 /// The least closed set from the start of `header` (a trace header: points,
-/// cells, reading), within `max_triangulations`.
-inline Closure search(const nlohmann::json& header, std::size_t max_triangulations)
+/// cells, reading), within `max_triangulations`. With `stop_at_delaunay` the
+/// search stops as soon as CGAL's triangulation joins the set (then
+/// `delaunay` is 1 and `closed` false): enough to tell that the start is no
+/// trap, and the cheap answer for the many starts that are not. It then takes
+/// the triangulations with the fewest facets that are not locally Delaunay
+/// first; the least set is the same in any order, only the way there differs.
+inline Closure search(const nlohmann::json& header, std::size_t max_triangulations, bool stop_at_delaunay = false)
 {
   Checker model(header);
+  Checker probe(header); // counts a new triangulation's facets that are not locally Delaunay
   const std::string reading = header.at("reading").get<std::string>();
   const bool tags_outlive_cells = reading.rfind("never-cleared", 0) == 0;
   const bool cleared_each_cycle = reading.rfind("cleared-each-cycle", 0) == 0;
   Closure result;
-  std::deque<Cells> work{model.cells()};
-  std::set<Cells> waiting{model.cells()};
-  result.bounds[model.cells()] = model.tags();
+  // The worklist: (priority, arrival, triangulation); map keys do not move.
+  typedef std::tuple<std::size_t, std::size_t, const Cells*> Entry;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> work;
+  std::set<const Cells*> waiting;
+  std::size_t arrivals = 0;
+  auto priority = [&](const Cells& cells) -> std::size_t {
+    if(!stop_at_delaunay) return 0; // first in, first out
+    probe.set_state(cells, {});
+    return probe.facets_not_delaunay();
+  };
+  if(stop_at_delaunay)
+  {
+    // Plain swapping first: a facet that is not locally Delaunay swaps
+    // wherever it has a flip, under every reading and with any tags, so its
+    // runs stay in the set; and they end, since each flip lowers the lifted
+    // triangulation. Most starts are seen to be no traps this way.
+    Cells cells = model.cells();
+    for(bool flipped = true; flipped;)
+    {
+      flipped = false;
+      probe.set_state(cells, {});
+      for(const auto& f : probe.interior_facets())
+      {
+        const auto [d, e] = probe.apexes(f);
+        const Checker::Decision r = probe.decide(f, d, e);
+        if(r.delaunay || !r.swap) continue;
+        for(const Cell& t : r.old_cells) cells.erase(t);
+        cells.insert(r.new_cells.begin(), r.new_cells.end());
+        flipped = true;
+        break;
+      }
+    }
+    if(probe.is_delaunay())
+    {
+      result.delaunay = 1;
+      return result;
+    }
+  }
+  std::map<const Cells*, std::size_t> rank; // each triangulation's priority
+  const Cells* start = &result.bounds.try_emplace(model.cells(), model.tags()).first->first;
+  rank[start] = priority(*start);
+  work.emplace(rank[start], arrivals++, start);
+  waiting.insert(start);
   while(!work.empty())
   {
-    const Cells cells = work.front();
-    work.pop_front();
-    waiting.erase(cells);
+    const Cells& cells = *std::get<2>(work.top());
+    work.pop();
+    waiting.erase(&cells);
     ++result.passes;
     // Until the bound of T stops growing: each visit from (T, M(T)).
     for(bool grew = true; grew;)
@@ -115,8 +162,6 @@ inline Closure search(const nlohmann::json& header, std::size_t max_triangulatio
       {
         const auto [d, e] = model.apexes(f);
         const Checker::Decision r = model.decide(f, d, e);
-        Cells tags = bound;
-        tags.insert(r.new_tags.begin(), r.new_tags.end());
         if(!r.swap)
         {
           if(!r.new_tags.empty())
@@ -126,7 +171,8 @@ inline Closure search(const nlohmann::json& header, std::size_t max_triangulatio
           }
           continue;
         }
-        Cells after = cells;
+        Cells tags = bound, after = cells;
+        tags.insert(r.new_tags.begin(), r.new_tags.end());
         for(const Cell& t : r.old_cells)
         {
           after.erase(t);
@@ -140,7 +186,14 @@ inline Closure search(const nlohmann::json& header, std::size_t max_triangulatio
         auto [it, added] = result.bounds.try_emplace(after);
         const std::size_t before = it->second.size();
         it->second.insert(tags.begin(), tags.end());
-        if((added || it->second.size() != before) && waiting.insert(after).second) work.push_back(after);
+        if(!added && it->second.size() == before) continue; // nothing new
+        if(added) rank[&it->first] = priority(it->first);
+        if(stop_at_delaunay && rank[&it->first] == 0)
+        {
+          result.delaunay = 1;
+          return result;
+        }
+        if(waiting.insert(&it->first).second) work.emplace(rank[&it->first], arrivals++, &it->first);
       }
     }
     if(result.bounds.size() > max_triangulations) break;

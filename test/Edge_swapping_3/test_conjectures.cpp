@@ -1285,6 +1285,11 @@ TEST_CASE("Adversarial orders: the effective-visit search reaches the same state
           if(changing.ends_with_probability_one && !changing.can_end_off_delaunay) REQUIRE(bounds.delaunay == 1);
           if(changing.states_that_can_end > 0 && reading.cycle_ending == ES::NO_SWAP_AND_NO_NEW_TAG)
             REQUIRE(bounds.can_end > 0);
+          // The trap scan's search, stopped at CGAL's triangulation, tells the same.
+          const auto scan = tag_bound_closure::search(h, 100000, true);
+          REQUIRE(scan.delaunay == bounds.delaunay);
+          REQUIRE(scan.closed == (bounds.delaunay == 0));
+          if(scan.closed) REQUIRE(scan.bounds == bounds.bounds);
           nodes += all_orders.nodes;
           effective_nodes += changing.nodes;
           if(changing.loop)
@@ -1356,6 +1361,10 @@ TEST_CASE("The 12- and 25-point traps: no order at all reaches CGAL's triangulat
       REQUIRE(bounds.bounds.size() == trap.triangulations);
       REQUIRE(bounds.delaunay == 0);
       REQUIRE(bounds.can_end == 0);
+      // The trap scan (experiment_adversarial_orders --traps) finds the same set.
+      const auto scan = tag_bound_closure::search(h, 10000, true);
+      REQUIRE(scan.closed);
+      REQUIRE(scan.bounds == bounds.bounds);
       if(ES::helper_reading_name(reading) == "until-destroyed,any-tetrahedron,no-swap-no-tag")
         kept = tag_bound_closure::certificate(h, bounds).dump() + '\n';
       ++readings;

@@ -752,6 +752,14 @@ public:
   bool visits_made_facets() const { return sweep_; }
   /// Whether every interior facet is locally Delaunay (perturbed).
   bool is_delaunay() const { return all_delaunay(); }
+  /// How many interior facets are not locally Delaunay (perturbed).
+  std::size_t facets_not_delaunay() const
+  {
+    std::size_t n = 0;
+    for(const auto& [f, holders] : facets_)
+      n += holders.size() == 2 && inside_sphere(oriented(holders[0]), apex(holders[1], f));
+    return n;
+  }
 
 private:
   void visit(const nlohmann::json& l, Result& result)
