@@ -58,6 +58,7 @@
 #include "adversarial_search.h"
 #include "effective_visit_search.h"
 #include "tag_bound_closure.h"
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -95,11 +96,21 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<std:
   std::vector<std::size_t> reached(readings.size()), trapped(readings.size()), undecided(readings.size());
   std::size_t starts = 0, fewest = std::numeric_limits<std::size_t>::max();
   nlohmann::json best;
+  // One model per reading, made (and its points checked) at the first start;
+  // TOPCOM's starts are triangulations of the points, a case file's is checked in main.
+  std::vector<trace_checker::Checker> models;
   auto visit = [&](std::size_t index, const std::vector<std::array<std::size_t, 4>>& cells) {
+    if(models.empty())
+      for(const auto& reading : readings) models.emplace_back(start_header(points, cells, reading));
+    tag_bound_closure::Cells start;
+    for(auto t : cells)
+    {
+      std::sort(t.begin(), t.end());
+      start.insert(t);
+    }
     for(std::size_t r = 0; r < readings.size(); ++r)
     {
-      const nlohmann::json h = start_header(points, cells, readings[r]);
-      const tag_bound_closure::Closure c = tag_bound_closure::search(h, max_triangulations, true);
+      const tag_bound_closure::Closure c = tag_bound_closure::search(models[r], start, max_triangulations, true);
       if(c.delaunay > 0)
       {
         ++reached[r];
@@ -117,7 +128,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<std:
       if(c.bounds.size() < fewest)
       {
         fewest = c.bounds.size();
-        best = tag_bound_closure::certificate(h, c);
+        best = tag_bound_closure::certificate(start_header(points, cells, readings[r]), c);
       }
     }
     if(++starts % 10000 == 0) std::cerr << starts << " starts scanned\n";

@@ -87,20 +87,20 @@ inline bool has_inert_state(Checker& model, const Cells& cells, const Cells& bou
 
 } // namespace internal
 
-/// The least closed set from the start of `header` (a trace header: points,
-/// cells, reading), within `max_triangulations`. With `stop_at_delaunay` the
+/// The least closed set from `start_cells`, under the reading of `model` (a
+/// checker of the points, in any state), within `max_triangulations`. With `stop_at_delaunay` the
 /// search stops as soon as CGAL's triangulation joins the set (then
 /// `delaunay` is 1 and `closed` false): enough to tell that the start is no
 /// trap, and the cheap answer for the many starts that are not. It then takes
 /// the triangulations with the fewest facets that are not locally Delaunay
 /// first; the least set is the same in any order, only the way there differs.
-inline Closure search(const nlohmann::json& header, std::size_t max_triangulations, bool stop_at_delaunay = false)
+inline Closure search(Checker model, const Cells& start_cells, std::size_t max_triangulations,
+                      bool stop_at_delaunay = false)
 {
-  Checker model(header);
-  Checker probe(header); // counts a new triangulation's facets that are not locally Delaunay
-  const std::string reading = header.at("reading").get<std::string>();
-  const bool tags_outlive_cells = reading.rfind("never-cleared", 0) == 0;
-  const bool cleared_each_cycle = reading.rfind("cleared-each-cycle", 0) == 0;
+  model.set_state(start_cells, {});
+  Checker probe = model; // counts a new triangulation's facets that are not locally Delaunay
+  const bool tags_outlive_cells = model.tags_outlive_cells();
+  const bool cleared_each_cycle = model.clears_tags_each_cycle();
   Closure result;
   // The worklist: (priority, arrival, triangulation); map keys do not move.
   typedef std::tuple<std::size_t, std::size_t, const Cells*> Entry;
@@ -206,6 +206,14 @@ inline Closure search(const nlohmann::json& header, std::size_t max_triangulatio
     if(result.closed) result.can_end += internal::has_inert_state(model, cells, bound, cleared_each_cycle);
   }
   return result;
+}
+
+/// The same from the start of `header` (a trace header: points, cells, reading).
+inline Closure search(const nlohmann::json& header, std::size_t max_triangulations, bool stop_at_delaunay = false)
+{
+  Checker model(header); // checks the points and the start
+  const Cells start = model.cells();
+  return search(std::move(model), start, max_triangulations, stop_at_delaunay);
 }
 
 /// The certificate of a closed set, for check_tag_bounds.py: the points, the

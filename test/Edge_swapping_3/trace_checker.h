@@ -748,6 +748,10 @@ public:
   bool round_is_idle() const { return round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_); }
   /// Whether the reading ends the run after a round without swaps, new tags or not.
   bool ends_without_swap() const { return end_without_swap_; }
+  /// Whether a destroyed cell's tag comes back with it (never-cleared).
+  bool tags_outlive_cells() const { return tags_outlive_cells_; }
+  /// Whether tags are cleared at each round's start (cleared-each-cycle).
+  bool clears_tags_each_cycle() const { return clear_tags_each_cycle_; }
   /// Whether facets made during a round are visited in it (same-cycle).
   bool visits_made_facets() const { return sweep_; }
   /// Whether every interior facet is locally Delaunay (perturbed).
