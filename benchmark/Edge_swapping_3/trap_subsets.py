@@ -5,14 +5,15 @@ subset of SIZE points of a case's points is scanned for traps, starts from
 which no order at all brings the helper strategy to CGAL's triangulation
 (experiment_adversarial_orders --traps, under each of READINGS).
 
-    trap_subsets.py CASE SIZE READINGS OUTDIR [MAX_TRIANGULATIONS]
+    trap_subsets.py CASE SIZE READINGS OUTDIR [MAX_TRIANGULATIONS [KEEP]]
 
 CASE is a case file whose points have integer coordinates (TOPCOM reads them
 exactly); READINGS a reading, or several joined by '+'. Each subset writes one
 line to OUTDIR/summary.txt (its points, then the program's summary line per
 reading) and, when it holds a trap, OUTDIR/subset_<points>.trap.json, the
-certificate of its smallest one (of the last reading that has one), which check_tag_bounds.py checks. A subset
-already in the summary is skipped, so a stopped scan resumes. At the end it
+certificate of its smallest one (of the last reading that has one), which
+check_tag_bounds.py checks. KEEP (point numbers joined by ',') scans only the
+subsets that hold those points. A subset already in the summary is skipped, so a stopped scan resumes. At the end it
 prints, per reading, the subsets, starts and traps.
 """
 import itertools
@@ -34,10 +35,11 @@ def fail(message):
 
 
 def main():
-    if len(sys.argv) not in (5, 6):
-        fail('usage: trap_subsets.py CASE SIZE READINGS OUTDIR [MAX_TRIANGULATIONS]')
+    if len(sys.argv) not in (5, 6, 7):
+        fail('usage: trap_subsets.py CASE SIZE READINGS OUTDIR [MAX_TRIANGULATIONS [KEEP]]')
     case_file, size_text, readings, out = sys.argv[1:5]
-    most = sys.argv[5] if len(sys.argv) == 6 else '100000'
+    most = sys.argv[5] if len(sys.argv) > 5 else '100000'
+    keep_text = sys.argv[6] if len(sys.argv) > 6 else ''
     try:
         with open(case_file) as f:
             case = json.load(f)
@@ -47,6 +49,13 @@ def main():
     if not size_text.isdigit() or not 5 <= int(size_text) <= len(points):
         fail(f'SIZE is a whole number from 5 to {len(points)}, not {size_text!r}')
     size = int(size_text)
+    if not most.isdigit() or int(most) == 0:
+        fail(f'MAX_TRIANGULATIONS is a whole number above 0, not {most!r}')
+    keep = set()
+    for word in filter(None, keep_text.split(',')):
+        if not word.isdigit() or int(word) >= len(points):
+            fail(f'KEEP names point numbers from 0 to {len(points) - 1}, not {word!r}')
+        keep.add(int(word))
     os.makedirs(out, exist_ok=True)
     summary = os.path.join(out, 'summary.txt')
     done = set()
@@ -55,7 +64,7 @@ def main():
             done = {line.split(' ')[0] for line in f if line.strip()}
     for subset in itertools.combinations(range(len(points)), size):
         name = '-'.join(map(str, subset))
-        if name in done:
+        if name in done or not keep <= set(subset):
             continue
         sub_case = {'points': [points[i] for i in subset], 'start': 'placing', 'strategy': 'helper',
                     'order': 'random', 'seed': 1}

@@ -118,18 +118,15 @@ inline Closure search(Checker model, const Cells& start_cells, std::size_t max_t
     // wherever it has a flip, under every reading and with any tags, so its
     // runs stay in the set; and they end, since each flip lowers the lifted
     // triangulation. Most starts are seen to be no traps this way.
-    Cells cells = model.cells();
     for(bool flipped = true; flipped;)
     {
       flipped = false;
-      probe.set_state(cells, {});
       for(const auto& f : probe.interior_facets())
       {
         const auto [d, e] = probe.apexes(f);
         const Checker::Decision r = probe.decide(f, d, e);
         if(r.delaunay || !r.swap) continue;
-        for(const Cell& t : r.old_cells) cells.erase(t);
-        cells.insert(r.new_cells.begin(), r.new_cells.end());
+        probe.flip(r);
         flipped = true;
         break;
       }

@@ -737,6 +737,13 @@ public:
     for(const Cell& t : cells) add_cell(t);
     tags_ = tags;
   }
+  /// Makes the flip of a decision that has one, and nothing else (no tags, no
+  /// count, no check of the volume), for a program that searches states.
+  void flip(const Decision& r)
+  {
+    for(const Cell& t : r.old_cells) remove_cell(t);
+    for(const Cell& t : r.new_cells) add_cell(t);
+  }
   const std::set<Cell>& cells() const { return cells_; }
   const std::set<Cell>& tags() const { return tags_; }
   const std::vector<Point>& points() const { return points_; }
