@@ -4,7 +4,7 @@
 # 12-point trap (with integer coordinates, so that TOPCOM can read them) and
 # writes a certificate that check_tag_bounds.py certifies; it finds no trap
 # among every TOPCOM triangulation of a random 7-point set; it refuses bad
-# starts with exit 2 and no certificate; trap_subsets.py scans and resumes.
+# starts with exit 2 and no certificate; scan_traps.py scans and resumes.
 #
 #   trap_scan.sh EXPERIMENT SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -58,16 +58,34 @@ for bad in hole cut missing; do
   [ ! -e "$work/$bad.cert" ] || fail "$bad.json: a certificate was written"
 done
 
-# trap_subsets.py: the 7-point subsets of 8 of the trap's points, then again (resumed: nothing new).
+# scan_traps.py: the 7-point subsets of 8 of the trap's points, then again (resumed: nothing new).
 python3 -c "import json, sys; c = json.load(open(sys.argv[1])); c['points'] = c['points'][:8]; del c['cells']; \
 c['start'] = 'placing'; json.dump(c, open(sys.argv[2], 'w'))" "$trap" "$work/eight.json"
+scan="$source_dir/benchmark/Edge_swapping_3/scan_traps.py"
+both=until-destroyed,pass-over,no-swap-no-tag+until-destroyed,any-tetrahedron,no-swap-no-tag
 for round in 1 2; do
-  EXPERIMENT_ADVERSARIAL_ORDERS=$program python3 "$source_dir/benchmark/Edge_swapping_3/trap_subsets.py" \
-    "$work/eight.json" 7 until-destroyed,pass-over,no-swap-no-tag+until-destroyed,any-tetrahedron,no-swap-no-tag \
-    "$work/subsets" > "$work/subsets_$round.txt"
+  EXPERIMENT_ADVERSARIAL_ORDERS=$program python3 "$scan" subsets "$work/eight.json" 7 $both "$work/subsets" \
+    > "$work/subsets_$round.txt"
   [ "$(wc -l < "$work/subsets/summary.txt")" = 16 ] || fail "round $round: $(cat "$work/subsets/summary.txt")"
   grep -qE "^until-destroyed,pass-over,no-swap-no-tag 8 [0-9]+ 0$" "$work/subsets_$round.txt" ||
     fail "round $round: $(cat "$work/subsets_$round.txt")"
 done
 cmp -s "$work/subsets_1.txt" "$work/subsets_2.txt" || fail "the resumed scan's totals differ"
+# Random slabs and caps of 6 points, and bad arguments (exit 2, no traceback).
+for family in slab cap; do
+  EXPERIMENT_ADVERSARIAL_ORDERS=$program python3 "$scan" $family 6 1-3 $both "$work/$family" > "$work/$family.txt"
+  grep -qE "^until-destroyed,any-tetrahedron,no-swap-no-tag 3 [0-9]+ 0$" "$work/$family.txt" ||
+    fail "$family: $(cat "$work/$family.txt")"
+  grep -q "^${family}_6_3 reading until-destroyed,pass-over" "$work/$family/summary.txt" || fail "$family: no set 3"
+done
+for arguments in "slab 6 3-1 $both $work/bad" "cap x 1-2 $both $work/bad" "subsets $work/missing.json 6 $both $work/bad" \
+  "subsets $work/eight.json 9 $both $work/bad" "subsets $work/eight.json 6 $both $work/bad 10 1,99" \
+  "subsets $work/eight.json 6 $both $work/bad 0" "nothing"; do
+  status=0
+  python3 "$scan" $arguments > /dev/null 2> "$work/error.txt" || status=$?
+  [ "$status" = 2 ] || fail "scan_traps.py $arguments: exit $status, not 2"
+  grep -q "^scan_traps.py: " "$work/error.txt" && ! grep -q Traceback "$work/error.txt" ||
+    fail "scan_traps.py $arguments: $(cat "$work/error.txt")"
+done
+[ ! -e "$work/bad/summary.txt" ] || fail "a refused scan wrote a summary"
 echo "trap scan: all checks passed"
