@@ -73,8 +73,10 @@ using adversarial_search::Loop_found;
 
 namespace {
 
+typedef std::vector<std::array<std::size_t, 4>> Cell_list; // a triangulation, as TOPCOM gives it
+
 // The trace header of a start under a reading, for the searches.
-nlohmann::json start_header(const std::vector<K::Point_3>& points, const std::vector<std::array<std::size_t, 4>>& cells,
+nlohmann::json start_header(const std::vector<K::Point_3>& points, const Cell_list& cells,
                             const ES::Helper_reading& reading)
 {
   nlohmann::json h{{"format", "Edge_swapping_3 visit trace"}, {"version", 1}, {"strategy", "helper"},
@@ -89,7 +91,7 @@ nlohmann::json start_header(const std::vector<K::Point_3>& points, const std::ve
 }
 
 // --traps: every start (the given one, or TOPCOM's streamed) under every reading.
-int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<std::vector<std::array<std::size_t, 4>>>& given,
+int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell_list>& given,
                    const std::vector<ES::Helper_reading>& readings, std::size_t max_triangulations,
                    const char* certificate_file)
 {
@@ -99,7 +101,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<std:
   // One model per reading, made (and its points checked) at the first start;
   // TOPCOM's starts are triangulations of the points, a case file's is checked in main.
   std::vector<trace_checker::Checker> models;
-  auto visit = [&](std::size_t index, const std::vector<std::array<std::size_t, 4>>& cells) {
+  auto visit = [&](std::size_t index, const Cell_list& cells) {
     if(models.empty())
       for(const auto& reading : readings) models.emplace_back(start_header(points, cells, reading));
     tag_bound_closure::Cells start;
@@ -198,7 +200,7 @@ int main(int argc, char** argv)
   const std::size_t most_seed = std::numeric_limits<unsigned>::max();
   const std::string source = argv[1];
   std::vector<K::Point_3> points;
-  std::vector<std::vector<std::array<std::size_t, 4>>> starts;
+  std::vector<Cell_list> starts;
   std::vector<std::string> part(1);
   for(char ch : source)
     if(ch == ':') part.emplace_back();

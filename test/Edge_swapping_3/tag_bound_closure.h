@@ -88,12 +88,13 @@ inline bool has_inert_state(Checker& model, const Cells& cells, const Cells& bou
 } // namespace internal
 
 /// The least closed set from `start_cells`, under the reading of `model` (a
-/// checker of the points, in any state), within `max_triangulations`. With `stop_at_delaunay` the
-/// search stops as soon as CGAL's triangulation joins the set (then
-/// `delaunay` is 1 and `closed` false): enough to tell that the start is no
-/// trap, and the cheap answer for the many starts that are not. It then takes
-/// the triangulations with the fewest facets that are not locally Delaunay
-/// first; the least set is the same in any order, only the way there differs.
+/// checker of the points, in any state), within `max_triangulations`. With
+/// `stop_at_delaunay` the search stops as soon as CGAL's triangulation joins
+/// the set (then `delaunay` is 1 and `closed` false): enough to tell that the
+/// start is no trap, and the cheap answer for the many starts that are not.
+/// It then takes the triangulations with the fewest facets that are not
+/// locally Delaunay first; the least set is the same in any order, only the
+/// way there differs.
 inline Closure search(Checker model, const Cells& start_cells, std::size_t max_triangulations,
                       bool stop_at_delaunay = false)
 {
