@@ -136,7 +136,7 @@ def main():
             f.writelines(results)
         os.remove(case_file)
     totals = {}
-    pattern = re.compile(r'^\S+ reading (\S+): (\d+) starts, .* traps (\d+);')
+    pattern = re.compile(r'^\S+ reading (\S+): (\d+) starts, .* traps (\d+)(;|$)')
     with open(summary) as f:
         for line in f:
             m = pattern.match(line)
