@@ -52,7 +52,7 @@ alter tag_dropped "are beyond the bound" \
   "t = next(t for t in c['triangulations'] if t['tag_bound']); t['tag_bound'].pop()"
 alter start_moved "the start is not one of the triangulations" "c['start'] = c['start'][1:]"
 alter point_moved "not certified" "c['points'][0][0] += 0.5"
-printf '%s\n' '{"format":"Edge_swapping_3 tag-bound certificate","version":1,"points":[[0,0,0],[1,0,0],[0,1,0],[0,0,1]],"start":[[0,1,2,3]],"triangulations":[{"cells":[[0,1,2,3]],"tag_bound":[]}]}' > "$work/delaunay.json"
+printf '%s\n' '{"format":"Edge_swapping_3 tag-bound certificate","version":1,"reading":"until-destroyed,pass-over,no-swap","points":[[0,0,0],[1,0,0],[0,1,0],[0,0,1]],"start":[[0,1,2,3]],"triangulations":[{"cells":[[0,1,2,3]],"tag_bound":[]}]}' > "$work/delaunay.json"
 expect 1 "triangulation 0 is CGAL's triangulation" "$work/delaunay.json"
 
 # Unreadable: exit 2, naming the file and the problem.
@@ -73,6 +73,11 @@ bad same_points "{$head,\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,1,0]],\"start\":[
 bad out_of_range "{$head,\"points\":$four,\"start\":[[0,1,2,4]],\"triangulations\":[]}" "four point numbers below 4"
 bad repeated "{$head,\"points\":$four,\"start\":[[0,1,1,3]],\"triangulations\":[]}" "a cell with a repeated point"
 bad twice "{$head,\"points\":$four,\"start\":[[0,1,2,3],[3,2,1,0]],\"triangulations\":[]}" "a cell listed twice"
+bad no_reading "{$head,\"points\":$four,\"start\":[[0,1,2,3]],\"triangulations\":[]}" "'reading' is not a reading whose tags go"
+bad never_cleared "{$head,\"reading\":\"never-cleared,pass-over,no-swap\",\"points\":$four,\"start\":[[0,1,2,3]],\"triangulations\":[]}" \
+  "'reading' is not a reading whose tags go"
+bad bad_made "{$head,\"reading\":\"until-destroyed,pass-over,no-swap,sometimes\",\"points\":$four,\"start\":[[0,1,2,3]],\"triangulations\":[]}" \
+  "'reading' is not a reading whose tags go"
 bad bound_outside "{$head,\"points\":[[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]],\"start\":[[0,1,2,3]],\"triangulations\":[{\"cells\":[[0,1,2,3]],\"tag_bound\":[[0,1,2,4]]}]}" "holds a cell that is not one of its cells"
 bad not_object "{$head,\"points\":$four,\"start\":[[0,1,2,3]],\"triangulations\":[7]}" "triangulation 0 is not an object"
 expect 2 "cannot read it" "$work/none.json"

@@ -28,6 +28,12 @@ grep -qF "1 starts, 0 reach CGAL's triangulation, 0 undecided, traps 1" "$work/o
 python3 "$here/check_tag_bounds.py" "$work/trap.json" | grep -qF "certified: 2 triangulations" ||
   fail "check_tag_bounds.py does not certify the scan's certificate"
 
+# Under pass-over: the checker takes the narrower help swaps and says which readings it covers.
+"$program" --traps "$trap" until-destroyed,pass-over,no-swap 1000 "$work/pass_over.json" > /dev/null
+python3 "$here/check_tag_bounds.py" "$work/pass_over.json" |
+  grep -qF "certified: 2 triangulations, closed under every visit; none is CGAL's triangulation; no state ends a run under no-swap-no-tag (the 12 readings with pass-over or facet-cells)" ||
+  fail "check_tag_bounds.py on the pass-over certificate"
+
 # Every TOPCOM triangulation of a random 7-point set, every reading but never-cleared's: no trap.
 "$program" --traps random-integer:7:3 next-cycle 10000 > "$work/seven.txt"
 starts=$(awk '/points, .* starts$/ {print $3}' "$work/seven.txt")
