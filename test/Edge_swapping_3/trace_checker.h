@@ -737,8 +737,9 @@ public:
     for(const Cell& t : cells) add_cell(t);
     tags_ = tags;
   }
-  /// Makes the flip of a decision that has one, and nothing else (no tags, no
-  /// count, no check of the volume), for a program that searches states.
+  /// Makes the flip of a decision that has one, for a program that searches
+  /// states: the removed cells' tags go with them as in a swap, and nothing
+  /// else is done (no new tags, no count, no check of the volume).
   void flip(const Decision& r)
   {
     for(const Cell& t : r.old_cells) remove_cell(t);
