@@ -76,7 +76,8 @@ def point_sets(argv):
         try:
             with open(case_file) as f:
                 points = json.load(f)['points']
-            len(points)
+            if not isinstance(points, list):
+                raise TypeError('"points" is not a list')
         except (OSError, ValueError, KeyError, TypeError) as e:
             fail(f'{case_file}: not a case file with "points": {e}')
         size = whole(size_text, 'SIZE', 5)
@@ -90,6 +91,8 @@ def point_sets(argv):
         return sets, out, readings, most
     if mode in ('cap', 'slab') and len(argv) in (6, 7):
         n = whole(argv[2], 'N', 5)
+        if n > 64:  # TOPCOM could not list every triangulation of more anyway
+            fail(f'N is at most 64, not {n}')
         m = re.fullmatch(r'(\d+)-(\d+)', argv[3])
         if not m or int(m.group(1)) > int(m.group(2)):
             fail(f'SEEDS is FIRST-LAST, not {argv[3]!r}')
