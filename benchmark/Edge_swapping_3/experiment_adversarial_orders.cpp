@@ -6,7 +6,9 @@
 // readings, the order of the cycle's sweep through all vertex triples). Is
 // there a choice of orders under which the helper strategy never ends?
 //
-//   experiment_adversarial_orders [--reduce | --effective | --tag-bounds | --traps] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING MAX_STATES [TRACE]
+//   experiment_adversarial_orders --traps SOURCE READING MAX_STATES [TRACE] [--shard I/N]
+//   experiment_adversarial_orders --delaunay-first SOURCE READING [TRACE]
 //
 // SOURCE is random-integer:N:SET or family:NAME:N:SEED (as for
 // experiment_priority_loops), whose every TOPCOM triangulation is a start, a
@@ -48,7 +50,17 @@
 // triangulation, the traps, and the starts undecided within MAX_STATES
 // triangulations; TRACE receives the certificate of the trap with the
 // fewest triangulations (the first of them). Progress goes to standard error
-// every 10,000 starts.
+// every 10,000 starts. With --shard I/N only the starts numbered I modulo N
+// (in TOPCOM's order) are scanned: N shards, on any machines, scan each start
+// once, and their counts add up.
+// With --delaunay-first nothing is searched: each start's first cycle visits
+// its locally Delaunay facets first, then the others
+// (adversarial_search::delaunay_facets_first). Where plain swapping is stuck
+// that cycle swaps nothing, so under the no-swap readings the run ends there,
+// stuck: an order that ends it exists, and a uniformly random order of the
+// cycle is that one with positive probability. It prints, per reading, the
+// starts, those at which plain swapping is stuck, and the runs the cycle ends
+// (each trace confirmed by the checker); TRACE receives the first such trace.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
@@ -90,10 +102,61 @@ nlohmann::json start_header(const std::vector<K::Point_3>& points, const Cell_li
   return h;
 }
 
+// --delaunay-first: one cycle from every start under every reading.
+int delaunay_first(const std::vector<K::Point_3>& points, const std::vector<Cell_list>& starts,
+                   const std::vector<ES::Helper_reading>& readings, const char* trace_file)
+{
+  std::string first_trace;
+  std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " starts\n");
+  for(const ES::Helper_reading& reading : readings)
+  {
+    std::size_t plain_stuck = 0, stuck = 0, converged = 0;
+    for(const Cell_list& cells : starts)
+    {
+      const nlohmann::json header = start_header(points, cells, reading);
+      const trace_checker::Checker model(header);
+      std::size_t flips = 0;
+      for(const auto& f : model.interior_facets())
+      {
+        const auto [d, e] = model.apexes(f);
+        const trace_checker::Checker::Decision r = model.decide(f, d, e);
+        flips += !r.delaunay && r.swap;
+      }
+      plain_stuck += flips == 0 && !model.is_delaunay();
+      const std::string trace = adversarial_search::write_trace(header, {adversarial_search::delaunay_facets_first(model)});
+      std::istringstream in(trace);
+      const trace_checker::Result check = trace_checker::check_trace(in);
+      if(!check.ok)
+      {
+        std::cerr << "experiment_adversarial_orders: the checker refuses a first cycle's trace: " << check.error << '\n';
+        return 1;
+      }
+      converged += check.end == "converged";
+      if(check.end != "stuck") continue;
+      ++stuck;
+      if(first_trace.empty()) first_trace = trace;
+    }
+    std::cout << "reading " << ES::helper_reading_name(reading) << ": " << starts.size() << " starts, " << plain_stuck
+              << " where plain swapping is stuck; the first cycle, locally Delaunay facets first, ends " << stuck
+              << " runs stuck and " << converged << " on CGAL's triangulation\n";
+  }
+  if(trace_file && !first_trace.empty())
+  {
+    std::ofstream out(trace_file);
+    out << first_trace;
+    if(!out)
+    {
+      std::cerr << "experiment_adversarial_orders: " << trace_file << ": cannot write the trace\n";
+      return 2;
+    }
+  }
+  return 0;
+}
+
 // --traps: every start (the given one, or TOPCOM's streamed) under every reading.
 int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell_list>& given,
                    const std::vector<ES::Helper_reading>& readings, std::size_t max_triangulations,
-                   const char* certificate_file)
+                   const char* certificate_file, std::size_t shard, std::size_t shards)
 {
   std::vector<std::size_t> reached(readings.size()), trapped(readings.size()), undecided(readings.size());
   std::size_t starts = 0, fewest = std::numeric_limits<std::size_t>::max();
@@ -102,6 +165,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
   // TOPCOM's starts are triangulations of the points, a case file's is checked in main.
   std::vector<trace_checker::Checker> models;
   auto visit = [&](std::size_t index, const Cell_list& cells) {
+    if(index % shards != shard) return true;
     if(models.empty())
       for(const auto& reading : readings) models.emplace_back(start_header(points, cells, reading));
     tag_bound_closure::Cells start;
@@ -148,7 +212,9 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
     std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
     return 2;
   }
-  std::cout << points.size() << " points, " << starts << " starts\n";
+  std::cout << points.size() << " points, " << starts << " starts";
+  if(shards > 1) std::cout << ", shard " << shard << '/' << shards << " (the starts numbered " << shard << " modulo " << shards << ')';
+  std::cout << '\n';
   for(std::size_t r = 0; r < readings.size(); ++r)
     std::cout << "reading " << ES::helper_reading_name(readings[r]) << ": " << starts << " starts, " << reached[r]
               << " reach CGAL's triangulation, " << undecided[r] << " undecided, traps " << trapped[r] << "\n";
@@ -171,16 +237,37 @@ int main(int argc, char** argv)
 {
   const std::string flag = argc > 1 ? argv[1] : "";
   const bool reduce = flag == "--reduce", effective = flag == "--effective", tag_bounds = flag == "--tag-bounds",
-             traps = flag == "--traps";
-  if(reduce || effective || tag_bounds || traps)
+             traps = flag == "--traps", first_cycle = flag == "--delaunay-first";
+  if(reduce || effective || tag_bounds || traps || first_cycle)
   {
     --argc;
     ++argv;
   }
-  if(argc != 4 && argc != 5)
+  std::size_t shard = 0, shards = 1;
+  if(traps && argc > 2 && std::string(argv[argc - 2]) == "--shard")
   {
-    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective | --tag-bounds | --traps] SOURCE READING "
-                 "MAX_STATES [TRACE]\n";
+    // I/N: whole numbers, I < N.
+    const std::string value = argv[argc - 1];
+    const std::size_t slash = value.find('/');
+    const bool digits = slash != std::string::npos && slash > 0 && slash + 1 < value.size() &&
+                        value.find_first_not_of("0123456789/") == std::string::npos &&
+                        value.find('/', slash + 1) == std::string::npos && value.size() < 16;
+    if(digits) shard = std::stoul(value.substr(0, slash)), shards = std::stoul(value.substr(slash + 1));
+    if(!digits || shards == 0 || shard >= shards)
+    {
+      std::cerr << "experiment_adversarial_orders: --shard takes I/N, with whole numbers I < N, not '" << value << "'\n";
+      return 2;
+    }
+    argc -= 2;
+  }
+  bool stray_option = false; // e.g. --shard without its value, or where it does not belong
+  for(int i = 1; i < argc; ++i) stray_option = stray_option || std::string(argv[i]).rfind("--", 0) == 0;
+  if(stray_option || (first_cycle ? argc != 3 && argc != 4 : argc != 4 && argc != 5))
+  {
+    std::cerr << "usage: experiment_adversarial_orders [--reduce | --effective | --tag-bounds] SOURCE READING "
+                 "MAX_STATES [TRACE]\n"
+                 "       experiment_adversarial_orders --traps SOURCE READING MAX_STATES [TRACE] [--shard I/N]\n"
+                 "       experiment_adversarial_orders --delaunay-first SOURCE READING [TRACE]\n";
     return 2;
   }
   // A whole number up to `most`, or false (not digits, or too large).
@@ -265,7 +352,7 @@ int main(int argc, char** argv)
     }
   }
   std::size_t max_states = 0;
-  if(!whole_number(argv[3], max_states) || max_states == 0)
+  if(!first_cycle && (!whole_number(argv[3], max_states) || max_states == 0))
   {
     std::cerr << "experiment_adversarial_orders: MAX_STATES is a whole number above 0, not '" << argv[3] << "'\n";
     return 2;
@@ -283,8 +370,9 @@ int main(int argc, char** argv)
       return 2;
     }
   }
-  if(traps) return scan_for_traps(points, starts, readings, max_states, argc == 5 ? argv[4] : nullptr);
+  if(traps) return scan_for_traps(points, starts, readings, max_states, argc == 5 ? argv[4] : nullptr, shard, shards);
   if(starts.empty()) starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
+  if(first_cycle) return delaunay_first(points, starts, readings, argc == 4 ? argv[3] : nullptr);
   std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " triangulations\n");
   std::size_t best_swaps = std::numeric_limits<std::size_t>::max();
   std::string best_trace;

@@ -396,8 +396,28 @@ inline std::string write_trace(const nlohmann::json& header, const std::vector<s
                           {"cells", cells_json(m.cells())}, {"tagged", cells_json(tagged)}}.dump()
         << '\n';
   }
-  out << nlohmann::json{{"end", "cycle limit reached"}, {"rounds", path.size()}}.dump() << '\n';
+  // A last cycle that changed nothing ends the run (none before it can: the path goes on).
+  const std::string end = !m.round_is_idle() ? "cycle limit reached" : m.is_delaunay() ? "converged" : "stuck";
+  out << nlohmann::json{{"end", end}, {"rounds", path.size()}}.dump() << '\n';
   return out.str();
+}
+
+/// The order of a first cycle that visits the locally Delaunay facets of the
+/// model's state first, then the others (each part in the facets' order).
+/// With no tag set yet no help swap can be made before the others' turns, so
+/// where no facet that is not locally Delaunay has a flip (plain swapping is
+/// stuck), this cycle swaps nothing, and under a no-swap reading it ends the
+/// run, stuck. Any lifetime of tags, trigger or visit of made facets.
+inline std::vector<Facet> delaunay_facets_first(const Checker& model)
+{
+  std::vector<Facet> first, then;
+  for(const Facet& f : model.interior_facets())
+  {
+    const auto [d, e] = model.apexes(f);
+    (model.decide(f, d, e).delaunay ? first : then).push_back(f);
+  }
+  first.insert(first.end(), then.begin(), then.end());
+  return first;
 }
 
 struct Loop_found

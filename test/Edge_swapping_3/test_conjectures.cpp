@@ -1426,6 +1426,47 @@ TEST_CASE("The 12- and 25-point traps: no order at all reaches CGAL's triangulat
   }
 }
 
+TEST_CASE("Under the no-swap readings a first cycle that visits the locally Delaunay facets first ends the run stuck from the traps",
+          "[conjectures][traces]")
+{
+  // adversarial_search::delaunay_facets_first: with no tag yet, no help swap
+  // is made before the other facets' turns, and at the traps none of those
+  // has a flip, so the cycle swaps nothing (conjectures.md, "The 25-point
+  // trap under the no-swap readings"). Under no-swap-no-tag its new tags
+  // keep the run going. A start with a flip swaps in that cycle.
+  for(const std::string name : {"helper_random_order_trap_25_points.json", "helper_random_order_trap_12_points.json",
+                                "helper_priority_loop_6_points.json"})
+  {
+    INFO(name);
+    const auto c = load_case(name);
+    const bool trap = name != "helper_priority_loop_6_points.json";
+    std::size_t stuck = 0;
+    for(const auto& reading : ES::all_helper_readings())
+    {
+      INFO(ES::helper_reading_name(reading));
+      const auto h = adversarial_header(c.points, c.cells, reading);
+      const trace_checker::Checker model(h);
+      const auto order = adversarial_search::delaunay_facets_first(model);
+      REQUIRE(order.size() == model.interior_facets().size());
+      const auto r = check_text(adversarial_search::write_trace(h, {order}));
+      REQUIRE(r.ok);
+      REQUIRE(r.rounds == 1);
+      REQUIRE_FALSE(r.ends_on_delaunay);
+      if(!trap)
+      {
+        REQUIRE(r.swaps > 0);
+        REQUIRE(r.end == "cycle limit reached");
+        continue;
+      }
+      REQUIRE(r.swaps == 0);
+      const bool ends = reading.cycle_ending == ES::NO_SWAP;
+      REQUIRE(r.end == (ends ? "stuck" : "cycle limit reached"));
+      stuck += ends;
+    }
+    REQUIRE(stuck == (trap ? 18 : 0));
+  }
+}
+
 TEST_CASE("Adversarial orders: no loop from any start of ten 5-point sets, a certified 2-swap loop on 6 points, and random orders end with probability one",
           "[conjectures][traces]")
 {

@@ -4,7 +4,8 @@
 # 12-point trap (with integer coordinates, so that TOPCOM can read them) and
 # writes a certificate that check_tag_bounds.py certifies; it finds no trap
 # among every TOPCOM triangulation of a random 7-point set; it refuses bad
-# starts with exit 2 and no certificate; scan_traps.py scans and resumes.
+# starts with exit 2 and no certificate; scan_traps.py scans and resumes;
+# --delaunay-first ends the run from the trap in its first cycle under no-swap.
 #
 #   trap_scan.sh EXPERIMENT SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -47,6 +48,38 @@ for lifetime in until-destroyed cleared-each-cycle; do
   done
 done
 
+# --delaunay-first: the first cycle, locally Delaunay facets first, ends the run stuck exactly under the 18 no-swap readings.
+"$program" --delaunay-first "$trap" all "$work/first.jsonl" > "$work/first.txt"
+[ "$(grep -c "1 where plain swapping is stuck; the first cycle, locally Delaunay facets first, ends 1 runs stuck and 0 on" \
+  "$work/first.txt")" = 18 ] || fail "--delaunay-first: $(cat "$work/first.txt")"
+[ "$(grep -c "ends 0 runs stuck" "$work/first.txt")" = 18 ] || fail "--delaunay-first: $(cat "$work/first.txt")"
+grep -q "until-destroyed,pass-over,no-swap: .* ends 1 runs stuck" "$work/first.txt" || fail "$(cat "$work/first.txt")"
+[ "$(tail -n 1 "$work/first.jsonl")" = '{"end":"stuck","rounds":1}' ] || fail "--delaunay-first: the trace's end"
+for args in "$trap" "$trap no-such-reading" "$work/missing.json until-destroyed,pass-over,no-swap"; do
+  status=0
+  # shellcheck disable=SC2086 # the arguments are split on purpose
+  "$program" --delaunay-first $args > /dev/null 2> "$work/error.txt" || status=$?
+  [ "$status" = 2 ] || fail "--delaunay-first $args: exit $status, not 2"
+done
+
+# --shard I/N: three shards scan each start once, and their counts add up to the whole scan's.
+sharded=0
+for i in 0 1 2; do
+  "$program" --traps random-integer:7:3 until-destroyed,pass-over,no-swap 10000 --shard $i/3 > "$work/shard_$i.txt"
+  grep -qF ", shard $i/3 (the starts numbered $i modulo 3)" "$work/shard_$i.txt" || fail "shard $i: $(cat "$work/shard_$i.txt")"
+  n=$(awk '/^reading / {print $3}' "$work/shard_$i.txt")
+  grep -qF "reading until-destroyed,pass-over,no-swap: $n starts, $n reach CGAL's triangulation, 0 undecided, traps 0" \
+    "$work/shard_$i.txt" || fail "shard $i: $(cat "$work/shard_$i.txt")"
+  sharded=$((sharded + n))
+done
+[ "$sharded" = "$starts" ] || fail "the shards scanned $sharded starts, not $starts"
+for value in 3/3 1/0 x 1 "" "0/2 extra"; do
+  status=0
+  # shellcheck disable=SC2086 # "0/2 extra" is two arguments on purpose
+  "$program" --traps random-integer:7:3 until-destroyed,pass-over,no-swap 100 --shard $value > /dev/null 2>&1 || status=$?
+  [ "$status" = 2 ] || fail "--shard '$value': exit $status, not 2"
+done
+
 # Bad starts: exit 2, a message naming the file, no certificate.
 python3 - "$trap" "$work" <<'EOF'
 import json, sys
@@ -77,6 +110,17 @@ for round in 1 2; do
     fail "round $round: $(cat "$work/subsets_$round.txt")"
 done
 cmp -s "$work/subsets_1.txt" "$work/subsets_2.txt" || fail "the resumed scan's totals differ"
+# The same in two shards, each in its own OUTDIR: `total` adds them up to the same totals.
+for i in 0 1; do
+  EXPERIMENT_ADVERSARIAL_ORDERS=$program python3 "$scan" subsets "$work/eight.json" 7 $both "$work/subsets_shard$i" \
+    --shard $i/2 > /dev/null
+  grep -q "^0-1-2-3-4-5-6 shard $i/2 reading " "$work/subsets_shard$i/summary.txt" || fail "shard $i's summary"
+done
+python3 "$scan" total "$work/subsets_shard0" "$work/subsets_shard1" > "$work/subsets_sharded.txt"
+cmp -s "$work/subsets_1.txt" "$work/subsets_sharded.txt" || fail "the shards' totals: $(cat "$work/subsets_sharded.txt")"
+python3 "$scan" total "$work/subsets_shard0" > "$work/half.txt"
+[ "$(grep -c "^incomplete: .* 1 of 2 shards$" "$work/half.txt")" = 16 ] || fail "one shard of two: $(cat "$work/half.txt")"
+grep -qE "^until-destroyed,pass-over,no-swap-no-tag" "$work/half.txt" && fail "one shard of two counted: $(cat "$work/half.txt")"
 # Random slabs and caps of 6 points, and bad arguments (exit 2, no traceback).
 for family in slab cap; do
   EXPERIMENT_ADVERSARIAL_ORDERS=$program python3 "$scan" $family 6 1-3 $both "$work/$family" > "$work/$family.txt"
@@ -86,7 +130,8 @@ for family in slab cap; do
 done
 for arguments in "slab 6 3-1 $both $work/bad" "cap x 1-2 $both $work/bad" "subsets $work/missing.json 6 $both $work/bad" \
   "subsets $work/eight.json 9 $both $work/bad" "subsets $work/eight.json 6 $both $work/bad 10 1,99" \
-  "subsets $work/eight.json 6 $both $work/bad 0" "nothing"; do
+  "subsets $work/eight.json 6 $both $work/bad 0" "nothing" "slab 6 1-2 $both $work/bad --shard 2/2" \
+  "slab 6 1-2 $both $work/bad --shard" "total" "total $work/bad"; do
   status=0
   python3 "$scan" $arguments > /dev/null 2> "$work/error.txt" || status=$?
   [ "$status" = 2 ] || fail "scan_traps.py $arguments: exit $status, not 2"
