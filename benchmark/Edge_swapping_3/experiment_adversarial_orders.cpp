@@ -158,7 +158,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
                    const std::vector<ES::Helper_reading>& readings, std::size_t max_triangulations,
                    const char* certificate_file, std::size_t shard, std::size_t shards)
 {
-  std::vector<std::size_t> reached(readings.size()), trapped(readings.size()), undecided(readings.size());
+  std::vector<std::size_t> holds_delaunay(readings.size()), trapped(readings.size()), undecided(readings.size());
   std::size_t starts = 0, fewest = std::numeric_limits<std::size_t>::max();
   nlohmann::json best;
   // One model per reading, made (and its points checked) at the first start;
@@ -179,7 +179,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
       const tag_bound_closure::Closure c = tag_bound_closure::search(models[r], start, max_triangulations, true);
       if(c.delaunay > 0)
       {
-        ++reached[r];
+        ++holds_delaunay[r];
         continue;
       }
       if(!c.closed)
@@ -216,8 +216,8 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
   if(shards > 1) std::cout << ", shard " << shard << '/' << shards << " (the starts numbered " << shard << " modulo " << shards << ')';
   std::cout << '\n';
   for(std::size_t r = 0; r < readings.size(); ++r)
-    std::cout << "reading " << ES::helper_reading_name(readings[r]) << ": " << starts << " starts, " << reached[r]
-              << " reach CGAL's triangulation, " << undecided[r] << " undecided, traps " << trapped[r] << "\n";
+    std::cout << "reading " << ES::helper_reading_name(readings[r]) << ": " << starts << " starts, " << holds_delaunay[r]
+              << " with CGAL's triangulation in their set, " << undecided[r] << " undecided, traps " << trapped[r] << "\n";
   if(certificate_file && !best.is_null())
   {
     std::ofstream out(certificate_file);

@@ -25,7 +25,7 @@ fail() {
 "$program" --traps "$trap" until-destroyed,any-tetrahedron,no-swap-no-tag 1000 "$work/trap.json" > "$work/out.txt"
 grep -qF "start 0: a trap under until-destroyed,any-tetrahedron,no-swap-no-tag, 2 triangulations, 0 with a state" \
   "$work/out.txt" || fail "the trap: $(cat "$work/out.txt")"
-grep -qF "1 starts, 0 reach CGAL's triangulation, 0 undecided, traps 1" "$work/out.txt" || fail "$(cat "$work/out.txt")"
+grep -qF "1 starts, 0 with CGAL's triangulation in their set, 0 undecided, traps 1" "$work/out.txt" || fail "$(cat "$work/out.txt")"
 python3 "$here/check_tag_bounds.py" "$work/trap.json" | grep -qF "certified: 2 triangulations" ||
   fail "check_tag_bounds.py does not certify the scan's certificate"
 
@@ -42,7 +42,7 @@ starts=$(awk '/points, .* starts$/ {print $3}' "$work/seven.txt")
 for lifetime in until-destroyed cleared-each-cycle; do
   for condition in pass-over facet-cells any-tetrahedron; do
     for ending in no-swap no-swap-no-tag; do
-      grep -qF "reading $lifetime,$condition,$ending: $starts starts, $starts reach CGAL's triangulation, 0 undecided, traps 0" \
+      grep -qF "reading $lifetime,$condition,$ending: $starts starts, $starts with CGAL's triangulation in their set, 0 undecided, traps 0" \
         "$work/seven.txt" || fail "random-integer:7:3, $lifetime,$condition,$ending: $(cat "$work/seven.txt")"
     done
   done
@@ -68,7 +68,7 @@ for i in 0 1 2; do
   "$program" --traps random-integer:7:3 until-destroyed,pass-over,no-swap 10000 --shard $i/3 > "$work/shard_$i.txt"
   grep -qF ", shard $i/3 (the starts numbered $i modulo 3)" "$work/shard_$i.txt" || fail "shard $i: $(cat "$work/shard_$i.txt")"
   n=$(awk '/^reading / {print $3}' "$work/shard_$i.txt")
-  grep -qF "reading until-destroyed,pass-over,no-swap: $n starts, $n reach CGAL's triangulation, 0 undecided, traps 0" \
+  grep -qF "reading until-destroyed,pass-over,no-swap: $n starts, $n with CGAL's triangulation in their set, 0 undecided, traps 0" \
     "$work/shard_$i.txt" || fail "shard $i: $(cat "$work/shard_$i.txt")"
   sharded=$((sharded + n))
 done
