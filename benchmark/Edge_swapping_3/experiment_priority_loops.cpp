@@ -27,6 +27,9 @@
 // reading is saved there as a case file with its trace, unless one of the
 // same size and reading is there already.
 //
+// Per reading it prints the certified loop with the fewest swaps in one turn
+// (its seed and triangulation; the first of them).
+//
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
@@ -236,6 +239,7 @@ int run(int argc, char** argv)
     bool saved = false;
     std::size_t first_rung = 0; // of the ladder below
     std::vector<std::size_t> certified_on(rungs.size()); // loops certified on each rung
+    std::size_t fewest_swaps = 0, fewest_seed = 0, fewest_start = 0, loops_seen = 0; // the loop with the fewest swaps
     for(unsigned seed = first_seed; seed <= last_seed; ++seed)
     {
       std::size_t limit = 0, stuck = 0, certified = 0;
@@ -299,6 +303,12 @@ int run(int argc, char** argv)
         else if(!r.loop_certified)
           ++unsettled;
         certified += r.loop_certified;
+        if(r.loop_certified && (loops_seen++ == 0 || r.loop_swaps < fewest_swaps))
+        {
+          fewest_swaps = r.loop_swaps;
+          fewest_seed = seed;
+          fewest_start = t;
+        }
         if(r.loop_certified && !saved && !save_dir.empty())
         {
           // The first certified loop of this reading, as a case file and its trace.
@@ -323,6 +333,9 @@ int run(int argc, char** argv)
     std::cout << "loops certified by cycles traced:";
     for(std::size_t k = 0; k < rungs.size(); ++k)
       std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
+    std::cout << "fewest swaps in a certified loop: ";
+    if(loops_seen == 0) std::cout << "- (no loop)\n";
+    else std::cout << fewest_swaps << " (seed " << fewest_seed << ", triangulation " << fewest_start << ")\n";
     // The runs at the limit that are not certified loops: what became of them by the trace limit.
     std::cout << "at the limit, not certified: " << ended_later << " ended after cycle " << max_cycles
               << " on CGAL's triangulation, " << stuck_later << " ended stuck after it, " << unsettled

@@ -1128,6 +1128,7 @@ TEST_CASE("A certified loop of 6 points under the fixed order for each of the 36
   // byte, and the checker certifies each loop.
   const std::string folder = std::string(EDGE_SWAPPING_3_FIXTURES) + "/loops";
   std::set<std::string> readings;
+  std::map<std::size_t, std::size_t> by_swaps; // loops by the swaps of one turn
   for(const auto& entry : std::filesystem::directory_iterator(folder))
   {
     const std::string path = entry.path().string();
@@ -1144,8 +1145,11 @@ TEST_CASE("A certified loop of 6 points under the fixed order for each of the 36
     REQUIRE(r.loop_certified);
     REQUIRE(r.loop_to == c.max_cycles);
     readings.insert(ES::helper_reading_name(c.reading));
+    ++by_swaps[r.loop_swaps];
   }
   REQUIRE(readings.size() == 36);
+  // One turn of each loop, as the checker counts it: 2 swaps in 14, 4 in 22 (conjectures.md).
+  REQUIRE(by_swaps == std::map<std::size_t, std::size_t>{{2, 14}, {4, 22}});
 }
 
 TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[conjectures][traces]")
@@ -1594,6 +1598,7 @@ TEST_CASE("The smallest adversarial loop under each of the 36 readings: 2 swaps 
     INFO(r.error);
     REQUIRE(r.ok);
     REQUIRE(r.loop_certified);
+    REQUIRE(r.loop_swaps == 2);
     // One cycle when the facets a flip makes are visited in its cycle, else two.
     REQUIRE(r.loop_to - r.loop_from == (reading.made_facets == ES::MADE_FACETS_SAME_CYCLE ? 1u : 2u));
     ++kept;

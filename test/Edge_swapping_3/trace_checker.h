@@ -78,6 +78,7 @@ struct Result
   std::string end;             ///< the trace's ending, confirmed
   bool loop_certified = false; ///< priority order: a state came back
   std::size_t loop_from = 0, loop_to = 0; ///< the state after round `loop_from` is the state after round `loop_to`
+  std::size_t loop_swaps = 0;  ///< the swaps of rounds `loop_from` + 1 to `loop_to`: one turn of the loop
   bool ends_on_delaunay = false; ///< the last state is CGAL's Delaunay triangulation of the points
 };
 
@@ -854,6 +855,7 @@ private:
     if(queue_ && round == 1)
       require(unvisited_start_.empty(), "round 1 of the work queue left a facet of the start unvisited");
     result.rounds = round;
+    swaps_after_round_.push_back(result.swaps);
     last_round_idle_ = round_swaps_ == 0 && (round_tags_ == 0 || end_without_swap_);
     // A state that comes back certifies a loop when the visits are a function of
     // the state (the fixed order) or are chosen (an adversary repeats its choices).
@@ -866,6 +868,7 @@ private:
         result.loop_certified = true;
         result.loop_from = it->second;
         result.loop_to = round;
+        result.loop_swaps = result.swaps - swaps_after_round_[it->second];
       }
       else
         seen_.emplace(state, round);
@@ -927,6 +930,7 @@ private:
   // that never is must be visited before the round ends.
   std::set<Facet> owed_;
   std::size_t next_ = 0, round_swaps_ = 0, round_tags_ = 0;
+  std::vector<std::size_t> swaps_after_round_{0}; // the swaps confirmed by the end of each round, from round 0
   bool last_round_idle_ = false, ended_ = false;
   bool queue_ = false;                    // a trace of the work queue
   bool queue_visited_ = false;            // a visit other than the scan's has come
