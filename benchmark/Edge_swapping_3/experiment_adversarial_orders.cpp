@@ -371,7 +371,18 @@ int main(int argc, char** argv)
     }
   }
   if(traps) return scan_for_traps(points, starts, readings, max_states, argc == 5 ? argv[4] : nullptr, shard, shards);
-  if(starts.empty()) starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
+  if(starts.empty())
+  {
+    try
+    {
+      starts = ES::IO::topcom_triangulations(points, 1000000).triangulations;
+    }
+    catch(const std::exception& e) // TOPCOM missing or failing, points TOPCOM cannot read
+    {
+      std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
+      return 2;
+    }
+  }
   if(first_cycle) return delaunay_first(points, starts, readings, argc == 4 ? argv[3] : nullptr);
   std::cout << points.size() << " points, " << starts.size() << (starts.size() == 1 ? " start\n" : " triangulations\n");
   std::size_t best_swaps = std::numeric_limits<std::size_t>::max();

@@ -55,6 +55,20 @@ done
 [ "$(grep -c "ends 0 runs stuck" "$work/first.txt")" = 18 ] || fail "--delaunay-first: $(cat "$work/first.txt")"
 grep -q "until-destroyed,pass-over,no-swap: .* ends 1 runs stuck" "$work/first.txt" || fail "$(cat "$work/first.txt")"
 [ "$(tail -n 1 "$work/first.jsonl")" = '{"end":"stuck","rounds":1}' ] || fail "--delaunay-first: the trace's end"
+# Points TOPCOM cannot read (not integers), for every mode that enumerates: exit 2, not an abort.
+python3 -c "import json, sys; c = json.load(open(sys.argv[1])); c['points'][0][0] += 0.5; \
+json.dump(c, open(sys.argv[2], 'w'))" "$trap" "$work/half.json"
+for mode in --delaunay-first --tag-bounds --effective --traps; do
+  status=0
+  if [ $mode = --delaunay-first ]; then set -- until-destroyed,pass-over,no-swap; else set -- until-destroyed,pass-over,no-swap 10; fi
+  "$program" $mode "topcom:$work/half.json" "$@" > /dev/null 2> "$work/error.txt" || status=$?
+  [ "$status" = 2 ] || fail "$mode on points that are not integers: exit $status, not 2"
+  grep -qF "integer coordinates" "$work/error.txt" || fail "$mode: $(cat "$work/error.txt")"
+done
+status=0
+PATH=/nonexistent "$program" --delaunay-first random-integer:6:1 all > /dev/null 2> "$work/error.txt" || status=$?
+[ "$status" = 2 ] && grep -qF "TOPCOM is not installed" "$work/error.txt" ||
+  fail "--delaunay-first without TOPCOM: exit $status, $(cat "$work/error.txt")"
 for args in "$trap" "$trap no-such-reading" "$work/missing.json until-destroyed,pass-over,no-swap"; do
   status=0
   # shellcheck disable=SC2086 # the arguments are split on purpose
