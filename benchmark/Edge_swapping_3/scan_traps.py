@@ -26,8 +26,8 @@ already in the summary is skipped, so a stopped scan resumes. At the end it
 prints, per reading, the sets, starts and traps.
 
 With --shard I/N each set's starts numbered I modulo N (in TOPCOM's order) are
-scanned (experiment_adversarial_orders --traps ... --shard I/N): N shards, each
-in its own OUTDIR (on any machines: a Slurm array or GNU parallel), scan every
+scanned (experiment_adversarial_orders --traps ... --shard I/N; a trap's
+certificate is then <set>.shardIofN.trap.json): N shards, each in its own OUTDIR (on any machines: a Slurm array or GNU parallel), scan every
 start once. `total` adds up the summaries of OUTDIRs: a set counts when it was
 scanned whole or in all N of its shards; the others are listed as incomplete.
 """
