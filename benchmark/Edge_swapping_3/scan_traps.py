@@ -170,7 +170,10 @@ def main():
     argv, shard = shard_option(sys.argv)
     sets, out, readings, most = point_sets(argv)
     whole(most, 'MAX_TRIANGULATIONS', 1)
-    os.makedirs(out, exist_ok=True)
+    try:
+        os.makedirs(out, exist_ok=True)
+    except OSError as e:
+        fail(f'OUTDIR {out}: cannot make it a directory: {e.strerror}')
     summary = os.path.join(out, 'summary.txt')
     label = f' shard {shard}' if shard else ''  # after the set's name in its summary lines
     done = set()

@@ -145,7 +145,7 @@ done
 for arguments in "slab 6 3-1 $both $work/bad" "cap x 1-2 $both $work/bad" "subsets $work/missing.json 6 $both $work/bad" \
   "subsets $work/eight.json 9 $both $work/bad" "subsets $work/eight.json 6 $both $work/bad 10 1,99" \
   "subsets $work/eight.json 6 $both $work/bad 0" "nothing" "slab 6 1-2 $both $work/bad --shard 2/2" \
-  "slab 6 1-2 $both $work/bad --shard" "total" "total $work/bad"; do
+  "slab 6 1-2 $both $work/bad --shard" "total" "total $work/bad" "slab 6 1-2 $both $work/eight.json"; do
   status=0
   python3 "$scan" $arguments > /dev/null 2> "$work/error.txt" || status=$?
   [ "$status" = 2 ] || fail "scan_traps.py $arguments: exit $status, not 2"
