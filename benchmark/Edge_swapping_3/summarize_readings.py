@@ -3,9 +3,11 @@
 # Streams the JSON lines of `edge_swap experiment` (any number of files, for
 # example one per shard; line by line, so tens of millions of lines fit in
 # memory) and prints a Markdown table: per family, strategy, behaviour of
-# Algorithm 4 and face order, the runs, those that ended on CGAL's Delaunay
-# triangulation, those stuck, and those still going at the cycle limit, by
-# number of points. Files of `experiment --stream` are read by their tallies.
+# Algorithm 4 and face order, the runs, those whose last state is CGAL's
+# Delaunay triangulation (the runs that ended there, and any at the cycle limit
+# that were on it then but still swapping, as never-cleared's help swaps can
+# be), those stuck, and those still going at the cycle limit, by number of
+# points. Files of `experiment --stream` are read by their tallies.
 #
 # A behaviour joins the readings that differ only in the ending rule or in
 # pass-over / facet-cells (conjectures.md: they made the same runs). The
@@ -68,7 +70,7 @@ def main(paths):
                     count(j["family"], j["strategy"], j.get("reading", DEFAULT), j["order"], j["points"], 1,
                           j["equal_to_cgal"], j["ending"] == "stuck", j["ending"] == "cycle limit reached")
     sizes = sorted(sizes)
-    print("| family | strategy | tag lifetime | swap condition | made facets | order | runs | ended on CGAL's | stuck "
+    print("| family | strategy | tag lifetime | swap condition | made facets | order | runs | on CGAL's at the end | stuck "
           "| at the cycle limit, by points (%s) |" % ", ".join(map(str, sizes)))
     print("|---|---|---|---|---|---|---:|---:|---:|---|")
     disagreements = []
