@@ -1695,6 +1695,59 @@ TEST_CASE("The trace checker rejects altered traces, naming the line", "[conject
   REQUIRE_FALSE(check_text(joined(with_infinite)).ok);
 }
 
+TEST_CASE("Random sweeps (same-cycle): nearby seeds draw their own sweeps, and traces say how they were seeded",
+          "[conjectures][traces]")
+{
+  // Until stop 41 cycle k's sweep seed was m(seed + k), so seed s + 1 drew in
+  // cycle k the sweep of seed s in cycle k + 1.
+  std::set<std::uint64_t> sweep_seeds;
+  for(std::uint64_t seed = 0; seed < 200; ++seed)
+    for(std::uint64_t cycle = 1; cycle <= 200; ++cycle)
+    {
+      sweep_seeds.insert(ES::internal::random_sweep_seed(seed, cycle));
+      REQUIRE(ES::internal::random_sweep_seed(seed + 1, cycle) != ES::internal::random_sweep_seed(seed, cycle + 1));
+    }
+  REQUIRE(sweep_seeds.size() == 200 * 200);
+
+  // A random sweep's trace says so in its header, and the checker follows it:
+  // without the field it reads the older seeds, and the visits are out of order.
+  ES::Conjecture_case<Point> c;
+  c.points = ES::point_families::random_integer<Point>(10, 2);
+  c.strategy = ES::HELPER_STRATEGY;
+  c.order = ES::RANDOM_ORDER;
+  c.seed = 5;
+  c.max_cycles = 30;
+  REQUIRE(ES::helper_reading_from_name("until-destroyed,pass-over,no-swap-no-tag,same-cycle", c.reading));
+  std::ostringstream trace;
+  ES::trace_conjecture_case(c, trace);
+  auto lines = text_lines(trace.str());
+  auto header = nlohmann::json::parse(lines[0]);
+  REQUIRE(header.at("sweep_seeds") == "m(m(seed) + cycle)");
+  REQUIRE(check_text(joined(lines)).ok);
+  header.erase("sweep_seeds");
+  lines[0] = header.dump();
+  REQUIRE_FALSE(check_text(joined(lines)).ok);
+  header["sweep_seeds"] = "m(seed + cycle)";
+  lines[0] = header.dump();
+  REQUIRE(check_text(joined(lines)).error.find("unknown sweep_seeds") != std::string::npos);
+
+  // Next-cycle runs and fixed orders have no such field.
+  c.reading = ES::Helper_reading();
+  std::ostringstream next_cycle;
+  ES::trace_conjecture_case(c, next_cycle);
+  REQUIRE_FALSE(nlohmann::json::parse(text_lines(next_cycle.str())[0]).contains("sweep_seeds"));
+
+  // A trace written before stop 41 (random sweeps, the older seeds) is still confirmed.
+  const std::string older = test::Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) +
+                                                 "/../../../doc/Edge_swapping_3/results/"
+                                                 "trap_25_points_stuck_seed_38_same_cycle.trace.jsonl");
+  REQUIRE_FALSE(nlohmann::json::parse(text_lines(older)[0]).contains("sweep_seeds"));
+  const trace_checker::Result r = check_text(older);
+  INFO(r.error);
+  REQUIRE(r.ok);
+  REQUIRE(r.end == "stuck");
+}
+
 TEST_CASE("edge_swap replay --trace writes the trace the checker confirms, and insertion cases are refused",
           "[conjectures][traces][program]")
 {

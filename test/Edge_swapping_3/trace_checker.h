@@ -170,6 +170,14 @@ public:
     require(!sweep_ || order_ == "priority" || order_ == "random" || order_ == "adversarial",
             "same-cycle needs the priority, random or adversarial order");
     sweep_in_order_ = sweep_ && order_ != "adversarial";
+    // Random sweeps: cycle k's seed is m(m(seed) + k) in traces that say so
+    // (written since stop 41), m(seed + k) in older ones (traces.md).
+    if(header.contains("sweep_seeds"))
+    {
+      require(header.at("sweep_seeds") == "m(m(seed) + cycle)", "unknown sweep_seeds");
+      require(order_ == "random" && sweep_, "sweep_seeds belongs to random order with same-cycle");
+      mixed_sweep_seeds_ = true;
+    }
     require(!queue_ || (!clear_tags_each_cycle_ && !tags_outlive_cells_ && pass_over_ && !facet_cells_ &&
                         !end_without_swap_ && !sweep_ && order_ != "adversarial"),
             "the work queue runs the package's reading, in storage, random or priority order");
@@ -398,7 +406,7 @@ private:
     if(sweep_in_order_)
     {
       // A sweep (same-cycle): priority order, or in random order one drawn from the seed and the round.
-      sweep_seed_ = order_ == "priority" ? seed_ : mix(seed_ + round_number_);
+      sweep_seed_ = order_ == "priority" ? seed_ : mix((mixed_sweep_seeds_ ? mix(seed_) : seed_) + round_number_);
       ahead_.clear();
       for(const auto& [f, holders] : facets_)
         if(holders.size() == 2) ahead_.push_back(place_of(f));
@@ -941,6 +949,7 @@ private:
   bool sweep_in_order_ = false; // a sweep in the fixed or random order (not the adversary's)
   std::size_t round_number_ = 0;
   std::uint64_t sweep_seed_ = 0;
+  bool mixed_sweep_seeds_ = false;
   std::vector<Place> ahead_; // a sweep: the places still ahead, in order
   Place current_{0, {}};
   std::map<std::pair<std::set<Cell>, std::set<Cell>>, std::size_t> seen_;

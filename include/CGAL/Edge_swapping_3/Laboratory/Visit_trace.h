@@ -43,6 +43,13 @@ public:
   {
     header["format"] = "Edge_swapping_3 visit trace";
     header["version"] = 1;
+    // Random sweeps (same-cycle) take their seeds as internal::random_sweep_seed
+    // does since stop 41; traces without this field are older (traces.md).
+    const std::string reading = header.value("reading", "");
+    const std::string same_cycle = ",same-cycle";
+    if(header.value("order", "") == "random" && reading.size() > same_cycle.size() &&
+       reading.compare(reading.size() - same_cycle.size(), same_cycle.size(), same_cycle) == 0)
+      header["sweep_seeds"] = "m(m(seed) + cycle)";
     nlohmann::json points = nlohmann::json::array();
     std::vector<const Point*> by_number(number_.size());
     for(const auto& [p, k] : number_) by_number[k] = &p;

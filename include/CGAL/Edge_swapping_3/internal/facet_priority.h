@@ -49,6 +49,17 @@ std::uint64_t facet_priority(std::uint64_t seed, const Point& p, const Point& q,
   return splitmix64(point_priority_key(seed, p) + point_priority_key(seed, q) + point_priority_key(seed, r));
 }
 
+/// The seed of cycle `cycle`'s sweep in random order when the facets made
+/// during a cycle are visited in it (same-cycle): SplitMix64 of the run's seed,
+/// plus the cycle, through SplitMix64 again. Until stop 41 it was
+/// SplitMix64(`seed` + `cycle`), so that seed s + 1 drew in cycle k the sweep
+/// of seed s in cycle k + 1: runs of nearby seeds that met in one state went on
+/// alike, shifted by a cycle, and were not independent samples.
+inline std::uint64_t random_sweep_seed(std::uint64_t seed, std::uint64_t cycle)
+{
+  return splitmix64(splitmix64(seed) + cycle);
+}
+
 } // namespace internal
 } // namespace Edge_swapping_3
 } // namespace CGAL

@@ -1008,7 +1008,7 @@ private:
       record_.cycle = round;
       begin_cycle_tags();
       const std::uint64_t seed = settings_.face_order == RANDOM_ORDER
-                                   ? splitmix64(std::uint64_t(settings_.random_seed) + round)
+                                   ? random_sweep_seed(settings_.random_seed, round)
                                    : std::uint64_t(settings_.random_seed);
       std::set<Sweep_place, decltype(before)> ahead(before);
       for(Cell_handle c : tr_.finite_cell_handles())
