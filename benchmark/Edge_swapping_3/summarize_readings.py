@@ -11,7 +11,9 @@
 # shard's file may be kept as its "stream" and "tally" lines alone, and
 # compressed (.xz or .gz: results/random12all/ keeps its shards so). It
 # says which shards of each `--shard I/N` are present, refuses one given
-# twice, and names the streamed files that stopped before their last tally.
+# twice, names the streamed files that stopped before their last tally, and
+# refuses files run with different --order-seeds (their random-order rows
+# are different samples).
 #
 # A behaviour joins the readings that differ only in the ending rule or in
 # pass-over / facet-cells (conjectures.md: they made the same runs). The
@@ -75,6 +77,7 @@ def main(paths):
         total += runs
 
     shards = collections.defaultdict(dict)  # N -> {I: path}
+    order_seeds = {}  # per-set or per-start -> the first file run so
     unfinished = []
     for path in paths:
         streamed = finished = False
@@ -90,6 +93,7 @@ def main(paths):
                         fail("%s, line %d: not a JSON line" % (path, number))
                     if "stream" in j:
                         streamed = True
+                        order_seeds.setdefault(j["stream"].get("order_seeds", "per-set"), path)
                         shard = j["stream"].get("shard", "")
                         if shard:
                             i, n = map(int, shard.split("/"))
@@ -103,6 +107,8 @@ def main(paths):
                             count(t["set"].split("|")[0], r["strategy"], r.get("reading", DEFAULT), r["order"],
                                   t["points"], r["instances"], r["equal"], r["stuck"], r["limit"])
                     elif not streamed:  # a streamed file's run lines are in its tallies
+                        if j["start"].startswith("topcom:"):
+                            order_seeds.setdefault("per-start" if "order_seed" in j else "per-set", path)
                         count(j["family"], j["strategy"], j.get("reading", DEFAULT), j["order"], j["points"], 1,
                               j["equal_to_cgal"], j["ending"] == "stuck", j["ending"] == "cycle limit reached")
         except (OSError, EOFError, lzma.LZMAError, UnicodeDecodeError) as e:
@@ -111,6 +117,9 @@ def main(paths):
             fail("%s: not a file of edge_swap experiment (%s)" % (path, e))
         if streamed and not finished:
             unfinished.append(path)
+    if len(order_seeds) > 1:
+        fail("files run with --order-seeds %s (%s) and %s (%s) cannot be summed" %
+             tuple(x for mode in sorted(order_seeds) for x in (mode, order_seeds[mode])))
     sizes = sorted(sizes)
     print("| family | strategy | tag lifetime | swap condition | made facets | order | runs | on CGAL's at the end | stuck "
           "| at the cycle limit, by points (%s) |" % ", ".join(map(str, sizes)))

@@ -72,6 +72,12 @@ refuses "a tally without its fields" tally.jsonl
 head -c 200 part0.jsonl.xz > truncated.jsonl.xz
 refuses "a truncated compressed file" truncated.jsonl.xz
 refuses "a missing file" missing.jsonl
+# Files run with a seed per start are other samples of the random orders: not summed with per-set ones.
+run per_start.jsonl --shard 1/3 --order-seeds per-start
+refuses "shards run with different --order-seeds" part0.jsonl.xz per_start.jsonl part2.jsonl.xz
+grep -q 'order-seeds per-set (part0.jsonl.xz) and per-start (per_start.jsonl)' err.txt ||
+  fail "the files run with different order seeds are not named"
+$summarize per_start.jsonl > per_start.txt || fail "a per-start file alone is refused"
 
 # The kept shards of the 12 random points under all readings add up to the
 # table that the report shows.

@@ -477,6 +477,101 @@ TEST_CASE("Experiment --stream: TOPCOM's triangulations streamed in batches, the
   }
 }
 
+TEST_CASE("Experiment --order-seeds per-start: each TOPCOM start draws its own face orders, recorded in its line, "
+          "replayed from its case, and kept apart from per-set files", "[conjectures][program]")
+{
+  Workdir w;
+  // Random orders (shuffles and sweeps) and a fixed priority all take the seed;
+  // at 2 cycles most runs are still going, so their outcomes show the orders.
+  const std::string args = "experiment --families random-integer --sizes 8 --seeds 1 --starts topcom --strategies helper "
+                           "--orders random,priority --readings \"until-destroyed,pass-over,no-swap-no-tag;"
+                           "never-cleared,any-tetrahedron,no-swap-no-tag,same-cycle\" --max-cycles 2 --threads 2 ";
+  const Run per_start = w.run(args + "--order-seeds per-start --cases " + w.path("cases") + " -o " + w.path("start.jsonl"));
+  INFO("stderr: " << per_start.err);
+  REQUIRE(per_start.exit_code == 0);
+  const Run per_set = w.run(args + "-o " + w.path("set.jsonl"));
+  REQUIRE(per_set.exit_code == 0);
+  const auto start_lines = json_lines(w.path("start.jsonl")), set_lines = json_lines(w.path("set.jsonl"));
+  REQUIRE(start_lines.size() == 132 * 4);
+  REQUIRE(set_lines.size() == start_lines.size());
+  std::map<std::string, nlohmann::json> by_key;
+  std::set<unsigned> seeds;
+  for(const auto& j : start_lines)
+  {
+    const std::size_t index = std::stoul(j["start"].get<std::string>().substr(7));
+    REQUIRE(j["seed"] == 1); // the point set's seed is still the instance's
+    REQUIRE(j["order_seed"].get<unsigned>() == ES::order_seed_of_start(1, index));
+    seeds.insert(j["order_seed"].get<unsigned>());
+    by_key[j["key"].get<std::string>()] = j;
+  }
+  REQUIRE(seeds.size() == 132); // distinct for the 132 starts
+  REQUIRE(seeds.count(1) == 0);
+  std::size_t differ = 0;
+  for(const auto& j : set_lines)
+  {
+    REQUIRE(!j.contains("order_seed"));
+    const auto& other = by_key.at(j["key"].get<std::string>());
+    differ += j["cycles"] != other["cycles"] || j["swaps"] != other["swaps"] || j["ending"] != other["ending"];
+  }
+  REQUIRE(differ > 0); // the orders, hence some runs, changed
+
+  // A saved case carries its start's seed and runs again to its line's outcome.
+  std::size_t replayed = 0;
+  for(const auto& entry : fs::directory_iterator(w.path("cases")))
+  {
+    if(replayed == 5) break;
+    const auto file = nlohmann::json::parse(Workdir::slurp(entry.path().string()));
+    const auto& line = by_key.at(file["instance"].get<std::string>());
+    REQUIRE(file["seed"] == line["order_seed"]);
+    const Run r = w.run("replay " + entry.path().string());
+    INFO(entry.path() << "\nstderr: " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto again = nlohmann::json::parse(r.out);
+    REQUIRE(again["cycles"] == line["cycles"]);
+    REQUIRE(again["swaps"] == line["swaps"]);
+    REQUIRE(again["ending"] == line["ending"]);
+    ++replayed;
+  }
+  REQUIRE(replayed == 5);
+
+  // Resuming a file with the other seeds is refused, and the file is left as it was.
+  const std::string before = Workdir::slurp(w.path("start.jsonl"));
+  Run r = w.run(args + "-o " + w.path("start.jsonl"));
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("start.jsonl was written with --order-seeds per-start; this run has per-set") != std::string::npos);
+  REQUIRE(Workdir::slurp(w.path("start.jsonl")) == before);
+  r = w.run(args + "--order-seeds per-start -o " + w.path("set.jsonl"));
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("set.jsonl was written with --order-seeds per-set; this run has per-start") != std::string::npos);
+  // An order seed that is not a 32-bit whole number is a bad line.
+  nlohmann::json bad_line = start_lines[1];
+  bad_line["order_seed"] = -1;
+  w.write("bad.jsonl", before.substr(0, before.find('\n') + 1) + bad_line.dump() + "\n");
+  r = w.run(args + "--order-seeds per-start -o " + w.path("bad.jsonl"));
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("bad.jsonl:2: not a results line: \"order_seed\"") != std::string::npos);
+
+  // Streamed: the file says so, its tallies are the list's counts, and a per-set resume is refused.
+  const Run streamed = w.run(args + "--order-seeds per-start --stream --stream-batch 40 -o " + w.path("stream.jsonl"));
+  REQUIRE(streamed.exit_code == 0);
+  const auto stream_lines = json_lines(w.path("stream.jsonl"));
+  REQUIRE(stream_lines.front()["stream"]["order_seeds"] == "per-start");
+  std::map<std::string, std::array<std::size_t, 5>> expected;
+  for(const auto& j : start_lines)
+  {
+    auto& row = expected[j["strategy"].get<std::string>() + "|" + j["order"].get<std::string>()];
+    const std::string ending = j["ending"];
+    row[0] += 1, row[1] += ending == "converged", row[2] += ending == "stuck", row[3] += ending == "cycle limit reached";
+    row[4] += j["equal_to_cgal"].get<bool>();
+  }
+  REQUIRE(stream_totals(stream_lines).rows == expected);
+  for(const auto& j : stream_lines)
+    if(j.contains("key")) REQUIRE(j["order_seed"] == by_key.at(j["key"].get<std::string>())["order_seed"]);
+  r = w.run(args + "--stream --stream-batch 40 -o " + w.path("stream.jsonl"));
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("was written with other options") != std::string::npos);
+}
+
 TEST_CASE("The laboratory from C++: TOPCOM starts, both strategies, a shrink and a replay, without the program",
           "[conjectures]")
 {
@@ -656,6 +751,8 @@ TEST_CASE("Experiment and shrink reject bad options and files cleanly", "[conjec
        "integer coordinates"},
       {"experiment --stream --starts topcom --families cube-corners --stream-batch 0 -o " + w.path("o.jsonl"),
        "--stream-batch is from 1"},
+      {"experiment --starts topcom --families cube-corners --order-seeds per-cycle -o " + w.path("o.jsonl"),
+       "--order-seeds 'per-cycle' is not per-set or per-start"},
       {"experiment --stream --starts topcom --families cube-corners --strategies insertion -o " + w.path("o.jsonl"),
        "the insertion strategy has none"},
       {"experiment --stream --starts topcom --families cube-corners --topcom-limit 0 -o " + w.path("o.jsonl"),

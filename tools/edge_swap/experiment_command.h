@@ -77,6 +77,9 @@ inline int run_experiment(const Experiment_options& opt)
   if(opt.threads > 256) throw Usage_error("--threads is at most 256");
   if(opt.max_cycles > 1000000000) throw Usage_error("--max-cycles is at most 1000000000");
   experiment.max_cycles = opt.max_cycles;
+  if(opt.order_seeds != "per-set" && opt.order_seeds != "per-start")
+    throw Usage_error("--order-seeds '" + opt.order_seeds + "' is not per-set or per-start");
+  experiment.order_seeds = opt.order_seeds == "per-start" ? ES::ORDER_SEED_PER_START : ES::ORDER_SEED_PER_SET;
   for(std::size_t size : opt.sizes)
     if(size < 4 || size > 100000000)
       throw Usage_error("--sizes: " + std::to_string(size) + " points; a size is from 4 to 100000000");
@@ -127,7 +130,15 @@ inline int run_experiment(const Experiment_options& opt)
   // line cut short by a stop is removed, so that appending starts on a new line.
   const bool existed = std::filesystem::exists(opt.output);
   std::set<std::string> done;
-  for(const auto& j : IO::read_results_file(opt.output, true)) done.insert(j["key"].get<std::string>());
+  for(const auto& j : IO::read_results_file(opt.output, true))
+  {
+    // A line of a TOPCOM start has an "order_seed" exactly when it ran with a seed per start.
+    if(j["start"].get<std::string>().rfind("topcom:", 0) == 0 &&
+       j.contains("order_seed") != (experiment.order_seeds == ES::ORDER_SEED_PER_START))
+      throw Usage_error(opt.output + " was written with --order-seeds " +
+                        (j.contains("order_seed") ? "per-start" : "per-set") + "; this run has " + opt.order_seeds);
+    done.insert(j["key"].get<std::string>());
+  }
 
   // Enumerate: the same list, in the same order, for every shard and every resume.
   const ES::Conjecture_instances instances = ES::conjecture_instances(experiment, [&](const std::vector<Point>& points, const std::string& set) {
@@ -166,7 +177,7 @@ inline int run_experiment(const Experiment_options& opt)
   // One instance at a time: its results line, and its case file when it failed or is a small stuck one.
   auto record = [&](const ES::Conjecture_instance& in, const ES::Conjecture_case<Point>& c, const ES::Conjecture_outcome& o) {
     const bool failure = ES::is_counterexample(c, o);
-    const nlohmann::json j = instance_line(in, c, o);
+    const nlohmann::json j = instance_line(in, c, o, experiment.order_seeds);
     save_case_if_wanted(opt, in, c, o);
     errno = 0;
     out << j.dump() << '\n' << std::flush;

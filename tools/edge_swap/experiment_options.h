@@ -39,6 +39,7 @@ struct Experiment_options
   bool topcom_limit_given = false;
   bool stream = false; // stream TOPCOM's triangulations, with tallies (experiment_stream.h)
   std::size_t stream_batch = 4096; // triangulations per tally (and per shard unit)
+  std::string order_seeds = "per-set"; // or per-start: the face-order seed of TOPCOM starts
 };
 
 namespace internal_experiment {
@@ -77,9 +78,9 @@ inline std::string file_safe(std::string s)
   return s;
 }
 
-/// The results line of one instance.
+/// The results line of one instance of an experiment with `order_seeds`.
 inline nlohmann::json instance_line(const ES::Conjecture_instance& in, const ES::Conjecture_case<Point>& c,
-                                    const ES::Conjecture_outcome& o)
+                                    const ES::Conjecture_outcome& o, ES::Order_seeds order_seeds)
 {
   nlohmann::json j = {{"key", in.key()},
                       {"family", in.family},
@@ -91,6 +92,7 @@ inline nlohmann::json instance_line(const ES::Conjecture_instance& in, const ES:
                       {"order", ES::face_order_name(in.order)},
                       {"failure", ES::is_counterexample(c, o)}};
   if(!in.reading.is_default()) j["reading"] = ES::helper_reading_name(in.reading);
+  if(order_seeds == ES::ORDER_SEED_PER_START && in.start.rfind("topcom:", 0) == 0) j["order_seed"] = c.seed;
   j.update(IO::conjecture_outcome_json(o));
   return j;
 }

@@ -58,9 +58,12 @@ inline nlohmann::json stream_options(const ES::Conjecture_experiment<Point>& exp
   for(auto s : experiment.strategies) strategies.push_back(ES::conjecture_strategy_name(s));
   for(auto o : experiment.orders) orders.push_back(ES::face_order_name(o));
   for(const auto& r : experiment.readings) readings.push_back(ES::helper_reading_name(r));
-  return {{"strategies", strategies}, {"orders", orders},   {"readings", readings},
-          {"max_cycles", experiment.max_cycles}, {"batch", batch}, {"shard", shard},
-          {"topcom_limit", limit}};
+  nlohmann::json options = {{"strategies", strategies}, {"orders", orders},   {"readings", readings},
+                             {"max_cycles", experiment.max_cycles}, {"batch", batch}, {"shard", shard},
+                             {"topcom_limit", limit}};
+  // Recorded only when not the default, so that older files still resume.
+  if(experiment.order_seeds != ES::ORDER_SEED_PER_SET) options["order_seeds"] = ES::order_seeds_name(experiment.order_seeds);
+  return options;
 }
 
 } // namespace internal_experiment
@@ -158,7 +161,7 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
                 if(in.strategy == ES::PLAIN_SWAPS && o.ending == ES::STUCK) stuck_from.insert(in.start);
                 if(in.strategy == ES::HELPER_STRATEGY && failure) failed_from.insert(in.start);
                 if(failure || o.bad_start || !o.valid || !o.equal_to_cgal || o.ending != ES::CONVERGED)
-                  lines += instance_line(in, c, o).dump() + "\n";
+                  lines += instance_line(in, c, o, experiment.order_seeds).dump() + "\n";
                 save_case_if_wanted(opt, in, c, o);
                 failures += failure;
               };

@@ -110,6 +110,8 @@ int main(int argc, char** argv)
                                               "none with --stream)")->check(CLI::PositiveNumber);
   experiment->add_flag("--stream", exp.stream, "stream TOPCOM's triangulations in batches: one tally line per batch, "
                                                "a line only for runs not ending on CGAL's triangulation");
+  experiment->add_option("--order-seeds", exp.order_seeds, "per-set (default: every TOPCOM start of a point set runs its "
+                         "seed's face orders) or per-start (each start its own seed: independent samples)");
   experiment->add_option("--stream-batch", exp.stream_batch, "with --stream: triangulations per batch (default 4096)");
 
   Shrink_options shr;

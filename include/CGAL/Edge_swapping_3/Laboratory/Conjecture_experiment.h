@@ -12,6 +12,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/internal/facet_priority.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include <algorithm>
@@ -53,6 +54,32 @@ struct Conjecture_instance
 };
 
 /// \ingroup PkgEdgeSwapping3Laboratory
+/// Where the face-order seed of a TOPCOM start comes from. With the set's
+/// seed, every start of a point set runs the same random orders (one sweep
+/// sequence, one stream of shuffles) and the same fixed priority: the runs
+/// are correlated. With a seed per start, they are independent samples.
+enum Order_seeds
+{
+  ORDER_SEED_PER_SET,  ///< the point set's seed (the default)
+  ORDER_SEED_PER_START ///< `order_seed_of_start(set seed, I)` for "topcom:I"
+};
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// "per-set" or "per-start".
+inline const char* order_seeds_name(Order_seeds s) { return s == ORDER_SEED_PER_START ? "per-start" : "per-set"; }
+
+/// \ingroup PkgEdgeSwapping3Laboratory
+/// The face-order seed of the start "topcom:I" of the point set with seed
+/// `set_seed` under `ORDER_SEED_PER_START`: the high half of
+/// m(m(set_seed) + I + 1), m the SplitMix64 finalizer. Start numbers one
+/// apart get unrelated seeds (not seeds one apart, whose random sweeps
+/// would be related through `internal::random_sweep_seed`).
+inline unsigned order_seed_of_start(unsigned set_seed, std::size_t start)
+{
+  return unsigned(internal::splitmix64(internal::splitmix64(set_seed) + std::uint64_t(start) + 1) >> 32);
+}
+
+/// \ingroup PkgEdgeSwapping3Laboratory
 /// An experiment: every combination of its lists.
 template <class Point>
 struct Conjecture_experiment
@@ -69,6 +96,7 @@ struct Conjecture_experiment
   /// reading that visits facets made in a cycle in it is not run in storage order.
   std::vector<Helper_reading> readings{Helper_reading()};
   std::size_t max_cycles = 1000;                     ///< the cycle limit of each run
+  Order_seeds order_seeds = ORDER_SEED_PER_SET;      ///< the face-order seed of TOPCOM starts
 };
 
 /// \ingroup PkgEdgeSwapping3Laboratory
@@ -160,7 +188,8 @@ Conjecture_instances conjecture_instances(const Conjecture_experiment<Point>& ex
 /// \ingroup PkgEdgeSwapping3Laboratory
 /// The case of `instance`: its family's points (for placing and insertion
 /// in an order drawn from the seed), its start and strategy, the
-/// experiment's cycle limit. Throws `std::invalid_argument` for a bad start.
+/// experiment's cycle limit, and its face-order seed (the set's, or for a
+/// TOPCOM start under `ORDER_SEED_PER_START` the start's). Throws `std::invalid_argument` for a bad start.
 template <class Point>
 Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
                                           const Conjecture_experiment<Point>& experiment,
@@ -182,6 +211,7 @@ Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
     const std::size_t index = std::stoul(start.substr(7));
     const std::size_t offset = first == instances.topcom_first.end() ? 0 : first->second;
     if(index < offset) throw std::invalid_argument("triangulation " + start + " is not held");
+    if(experiment.order_seeds == ORDER_SEED_PER_START) c.seed = order_seed_of_start(instance.seed, index);
     c.cells = oriented_cells(c.points, instances.topcom_cells.at(set).at(index - offset));
     return c;
   }
