@@ -171,7 +171,8 @@ inline std::string results_line_problem(const nlohmann::json& j)
   for(const char* key : {"size", "points", "seed"})
     if(!j.contains(key) || !j[key].is_number_unsigned()) return std::string("\"") + key + "\" is missing or not a whole number";
   if(j["seed"].get<unsigned long long>() > 4294967295ULL) return "\"seed\" is too large";
-  if(j.contains("order_seed") && (!j["order_seed"].is_number_unsigned() || j["order_seed"].get<unsigned long long>() > 4294967295ULL))
+  if(j.contains("order_seed") &&
+     (!j["order_seed"].is_number_unsigned() || j["order_seed"].get<unsigned long long>() > 4294967295ULL))
     return "\"order_seed\" is not a whole number below 2^32";
   for(const char* key : {"cycles", "seconds"})
     if(!j.contains(key) || !j[key].is_number()) return std::string("\"") + key + "\" is missing or not a number";

@@ -189,7 +189,8 @@ Conjecture_instances conjecture_instances(const Conjecture_experiment<Point>& ex
 /// The case of `instance`: its family's points (for placing and insertion
 /// in an order drawn from the seed), its start and strategy, the
 /// experiment's cycle limit, and its face-order seed (the set's, or for a
-/// TOPCOM start under `ORDER_SEED_PER_START` the start's). Throws `std::invalid_argument` for a bad start.
+/// TOPCOM start under `ORDER_SEED_PER_START` the start's). Throws
+/// `std::invalid_argument` for a bad start.
 template <class Point>
 Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
                                           const Conjecture_experiment<Point>& experiment,
