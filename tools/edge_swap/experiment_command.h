@@ -77,9 +77,8 @@ inline int run_experiment(const Experiment_options& opt)
   if(opt.threads > 256) throw Usage_error("--threads is at most 256");
   if(opt.max_cycles > 1000000000) throw Usage_error("--max-cycles is at most 1000000000");
   experiment.max_cycles = opt.max_cycles;
-  if(opt.order_seeds != "per-set" && opt.order_seeds != "per-start")
+  if(!ES::order_seeds_from_name(opt.order_seeds, experiment.order_seeds))
     throw Usage_error("--order-seeds '" + opt.order_seeds + "' is not per-set or per-start");
-  experiment.order_seeds = opt.order_seeds == "per-start" ? ES::ORDER_SEED_PER_START : ES::ORDER_SEED_PER_SET;
   for(std::size_t size : opt.sizes)
     if(size < 4 || size > 100000000)
       throw Usage_error("--sizes: " + std::to_string(size) + " points; a size is from 4 to 100000000");

@@ -69,6 +69,19 @@ enum Order_seeds
 inline const char* order_seeds_name(Order_seeds s) { return s == ORDER_SEED_PER_START ? "per-start" : "per-set"; }
 
 /// \ingroup PkgEdgeSwapping3Laboratory
+/// The setting named `name` ("per-set", "per-start") in `s`; false for another name.
+inline bool order_seeds_from_name(const std::string& name, Order_seeds& s)
+{
+  for(Order_seeds k : {ORDER_SEED_PER_SET, ORDER_SEED_PER_START})
+    if(name == order_seeds_name(k))
+    {
+      s = k;
+      return true;
+    }
+  return false;
+}
+
+/// \ingroup PkgEdgeSwapping3Laboratory
 /// The face-order seed of the start "topcom:I" of the point set with seed
 /// `set_seed` under `ORDER_SEED_PER_START`: the high half of
 /// m(m(set_seed) + I + 1), m the SplitMix64 finalizer. Start numbers one
