@@ -4,7 +4,8 @@
 # add up to the whole run in summarize_readings.py; the script names missing
 # shards and unfinished files, and refuses a shard given twice and bad files.
 # The shards kept in doc/Edge_swapping_3/results/random12all/ add up to the
-# table of results/random12all_shards.md.
+# table of results/random12all_shards.md, and the kept set 3 of the 12 random
+# points gives its table in results/stream_topcom.md.
 #
 #   streamed_shards.sh EDGE_SWAP SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -88,4 +89,12 @@ if [ -e "${kept[0]}" ]; then
     fail "results/random12all/ does not add up to the table of results/random12all_shards.md"
   grep -q 'stopped early' kept.txt && fail "a kept random12all shard is unfinished"
 fi
+# Set 3 of the 12 random points (the package's reading), kept whole, gives its table in stream_topcom.md.
+set3=$src/doc/Edge_swapping_3/results/random12_set3.jsonl.xz
+$summarize "$set3" > set3.txt
+awk '/^## 12 random integer points, set 3/ { on = 1; next } on && /^## / { exit } on' \
+  "$src/doc/Edge_swapping_3/results/stream_topcom.md" > set3_section.md
+diff <(table set3.txt) <(table set3_section.md) ||
+  fail "results/random12_set3.jsonl.xz does not give the set 3 table of results/stream_topcom.md"
+grep -q 'stopped early' set3.txt && fail "the kept set 3 file is unfinished"
 echo "streamed shards: all checks passed"
