@@ -8,7 +8,8 @@
 # again, so the script resumes where it stopped. Two processes given disjoint
 # reading lists share the work.
 #
-#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [READING ...]   (default: all 36 readings)
+#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]
+#   (default: all 36 readings)
 #
 # CASE and SEEDS as for experiment_priority_loops; the streams order the faces
 # of set SET by seed SET, for example:
@@ -17,18 +18,20 @@
 # With --shard I/N, only the starts numbered I modulo N: give each shard its own
 # OUTDIR (on any machine); summarize_certified_loops.py adds the shards up.
 #   certify_fixed_order_loops.sh OUT/set1_shard0 random-integer:12:1 1-1 --shard 0/4 until-destroyed,pass-over,no-swap-no-tag
-# --hold N and --trace-limit N are passed on to experiment_priority_loops
+# --order-seeds per-start gives each start its own priority, as edge_swap
+# experiment's option of that name does.
+# --hold N, --trace-limit N and --order-seeds are passed on to experiment_priority_loops
 # (--hold 0: a set known to have more than 10^6 triangulations is streamed
 # without enumerating it first; runs at the limit are traced on to cycle 1600,
 # or N, to certify loops that close after cycle 200).
 set -euo pipefail
-usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [READING ...]"
+usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]"
 out=${1:?$usage}
 case_=${2:?$usage}
 seeds=${3:?$usage}
 shift 3
 options=() # passed on
-while [ "${1:-}" = --shard ] || [ "${1:-}" = --hold ] || [ "${1:-}" = --trace-limit ]; do
+while [ "${1:-}" = --shard ] || [ "${1:-}" = --hold ] || [ "${1:-}" = --trace-limit ] || [ "${1:-}" = --order-seeds ]; do
   options+=("$1" "${2:?$usage}")
   shift 2
 done

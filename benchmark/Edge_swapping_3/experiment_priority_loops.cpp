@@ -5,12 +5,17 @@
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
 //   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] [--trace-limit N]
+//                             [--order-seeds per-set|per-start]
 //   experiment_priority_loops --list-readings     (the 36 readings' names, one a line)
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
 // order the faces of point set SET by seed SET. With --shard I/N, only the
 // triangulations numbered I modulo N (in TOPCOM's order) are starts: N shards
-// together are the whole run, and their counts add up.
+// together are the whole run, and their counts add up. With --order-seeds
+// per-start, the triangulation numbered I runs the priority of the seed
+// order_seed_of_start(SEED, I), as `edge_swap experiment --order-seeds
+// per-start` does: each start its own fixed order (the default, per-set,
+// gives every start SEED's).
 //
 // Up to 10^6 triangulations (--hold N: N) are held in memory; a point set
 // with more is streamed from TOPCOM again for each reading and seed, never
@@ -46,6 +51,7 @@
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "trace_checker.h"
 #include <algorithm>
@@ -63,7 +69,7 @@ namespace {
 
 const char* const usage =
   "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] "
-  "[--trace-limit N]\n";
+  "[--trace-limit N] [--order-seeds per-set|per-start]\n";
 
 /// The checker refused a trace: the run stops.
 struct Refused
@@ -78,15 +84,27 @@ int run(int argc, char** argv)
     return 0;
   }
   std::size_t shard = 0, shards = 1, hold_limit = 1000000, trace_limit = 0;
+  ES::Order_seeds order_seeds = ES::ORDER_SEED_PER_SET;
   for(int k = 1; k < argc;)
   {
     const std::string option = argv[k];
-    if(option != "--shard" && option != "--hold" && option != "--trace-limit")
+    if(option != "--shard" && option != "--hold" && option != "--trace-limit" && option != "--order-seeds")
     {
       ++k;
       continue;
     }
     const std::string value = k + 1 < argc ? argv[k + 1] : "";
+    if(option == "--order-seeds")
+    {
+      if(!ES::order_seeds_from_name(value, order_seeds))
+      {
+        std::cerr << "experiment_priority_loops: --order-seeds per-set or per-start, not '" << value << "'\n";
+        return 2;
+      }
+      std::copy(argv + k + 2, argv + argc, argv + k);
+      argc -= 2;
+      continue;
+    }
     bool ok = !value.empty() && value.find_first_not_of(option == "--shard" ? "0123456789/" : "0123456789") == std::string::npos;
     try
     {
@@ -220,6 +238,7 @@ int run(int argc, char** argv)
   else
     std::cout << held.triangulations.size() << " triangulations";
   if(shards > 1) std::cout << ", shard " << shard << '/' << shards << " (the triangulations numbered " << shard << " modulo " << shards << ')';
+  if(order_seeds == ES::ORDER_SEED_PER_START) std::cout << ", a priority per start (--order-seeds per-start)";
   std::cout << '\n';
   c.strategy = ES::HELPER_STRATEGY;
   c.order = ES::PRIORITY_ORDER;
@@ -246,7 +265,7 @@ int run(int argc, char** argv)
       long long first = -1;
       for_each_start([&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
         c.cells = ES::oriented_cells(c.points, cells);
-        c.seed = seed;
+        c.seed = order_seeds == ES::ORDER_SEED_PER_START ? ES::order_seed_of_start(seed, t) : seed;
         if(++runs % 100000 == 0) // progress of a long run, on stderr
           std::cerr << "reading " << ES::helper_reading_name(c.reading) << ": " << runs << " runs; seed " << seed
                     << ": " << limit << " at the limit so far\n";
@@ -335,7 +354,10 @@ int run(int argc, char** argv)
       std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
     std::cout << "fewest swaps in a certified loop: ";
     if(loops_seen == 0) std::cout << "- (no loop)\n";
-    else std::cout << fewest_swaps << " (seed " << fewest_seed << ", triangulation " << fewest_start << ")\n";
+    else
+      std::cout << fewest_swaps << " (seed " << fewest_seed << ", triangulation " << fewest_start
+                << (order_seeds == ES::ORDER_SEED_PER_START ? ", its priority seed " + std::to_string(ES::order_seed_of_start(unsigned(fewest_seed), fewest_start)) : std::string())
+                << ")\n";
     // The runs at the limit that are not certified loops: what became of them by the trace limit.
     std::cout << "at the limit, not certified: " << ended_later << " ended after cycle " << max_cycles
               << " on CGAL's triangulation, " << stuck_later << " ended stuck after it, " << unsettled

@@ -10,7 +10,9 @@
 # shards (--shard I/N) of one: a reading's counts are summed over them.
 # Readings not complete in every directory are listed as missing. Exit 1 if a
 # run at the limit was neither certified a loop nor seen to end, so that no
-# such claim goes unnoticed.
+# such claim goes unnoticed. Directories run with a priority per start
+# (--order-seeds per-start) sample other orders than those run with the set's
+# seed: given both, it exits 2 and names one of each.
 #
 #   summarize_certified_loops.py OUTDIR [OUTDIR ...]
 
@@ -41,6 +43,7 @@ def main(dirs):
     totals = collections.OrderedDict()
     seconds = collections.Counter()
     complete = collections.Counter()
+    kinds = {}  # per-set or per-start: the first file of that kind
     for d in dirs:
         for name in sorted(os.listdir(d)):
             if not name.endswith(".txt") or name == "progress.txt":
@@ -51,6 +54,13 @@ def main(dirs):
             found = [m for m in map(LINE.match, lines) if m]
             if not found:
                 continue
+            kind = "per-start" if lines and "a priority per start" in lines[0] else "per-set"
+            kinds.setdefault(kind, os.path.join(d, name))
+            if len(kinds) > 1:
+                sys.stderr.write("summarize_certified_loops.py: runs with --order-seeds per-set (%s) and per-start "
+                                 "(%s) are other samples; summarize them apart\n"
+                                 % (kinds["per-set"], kinds["per-start"]))
+                return 2
             runs, limit, certified, stuck = (int(found[-1].group(k + 1)) for k in range(4))
             # Files from before the trace limit (stop 35) have no such line: their runs
             # at the limit that are not certified are counted as not settled.
@@ -85,6 +95,8 @@ def main(dirs):
     print(f"readings complete: {len(done)}; {sum(totals[r][0] for r in done):,} runs, "
           f"{sum(totals[r][1] for r in done):,} at the limit, {sum(totals[r][2] for r in done):,} certified loops, "
           f"{sum(seconds[r] for r in done):,} s")
+    if "per-start" in kinds:
+        print("a fixed priority per start (--order-seeds per-start)")
     missing = [r for r in totals if complete[r] != len(dirs)]
     if missing:
         print("not complete in every directory: " + ", ".join(missing))

@@ -5,12 +5,16 @@
 # fine triangulations (TOPCOM), seeds 1 to 20, under two readings, through
 # certify_fixed_order_loops.sh and summarize_certified_loops.py, whole and in
 # three streamed shards. The counts are those of doc/Edge_swapping_3/conjectures.md.
+# With EDGE_SWAP, a priority per start (--order-seeds per-start) on 8 random
+# integer points under all 36 readings: the runs at the limit are those of
+# `edge_swap experiment --order-seeds per-start`, start for start in number.
 #
-#   certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR
+#   certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR [EDGE_SWAP]
 set -euo pipefail
 export EXPERIMENT_PRIORITY_LOOPS=${1:?usage: certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR}
 source_dir=${2:?}
 work=${3:?}
+edge_swap=${4:-}
 fixture=$source_dir/test/Edge_swapping_3/fixtures/helper_priority_loop_8_points.json
 certify=$source_dir/benchmark/Edge_swapping_3/certify_fixed_order_loops.sh
 summarize=$source_dir/benchmark/Edge_swapping_3/summarize_certified_loops.py
@@ -70,4 +74,40 @@ done
 status=0
 "$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 no-such-reading 2> /dev/null || status=$?
 [ $status = 2 ] || fail "an unknown reading: exit $status, not 2"
+
+# A priority per start: every run at the limit a certified loop, as many per reading as
+# edge_swap experiment leaves at the limit with the same seeds per start.
+if [ -n "$edge_swap" ]; then
+  bash "$certify" "$work/per_start" random-integer:8:1 1-1 --order-seeds per-start
+  grep -q "^8 points, 132 triangulations, a priority per start" "$work/per_start/${readings[0]}.txt" ||
+    fail "the per-start run does not say so"
+  python3 "$summarize" "$work/per_start" > "$work/per_start.md" || fail "per start: a run at the limit not certified"
+  grep -q '^readings complete: 36; 4,752 runs' "$work/per_start.md" || fail "per start: not 36 readings of 132 runs"
+  "$edge_swap" experiment -o "$work/per_start.jsonl" --starts topcom --max-cycles 200 --threads 1 --strategies helper \
+    --orders priority --families random-integer --sizes 8 --seeds 1 --readings all --order-seeds per-start > /dev/null 2>&1 ||
+    fail "edge_swap experiment --order-seeds per-start"
+  python3 - "$work/per_start.jsonl" "$work/per_start.md" << 'PY' || fail "per start: the counts differ from edge_swap experiment's"
+import collections, json, re, sys
+at_limit = collections.Counter()
+for line in open(sys.argv[1]):
+    run = json.loads(line)
+    key = run["key"].split("|")
+    reading = key[6] if len(key) > 6 else "until-destroyed,pass-over,no-swap-no-tag"  # the package's: no suffix
+    at_limit[reading] += run["ending"] == "cycle limit reached"
+rows = {m.group(1): int(m.group(2).replace(",", "")) for m in
+        re.finditer(r"^\| `([^`]+)` \| [\d,]+ \| ([\d,]+) \|", open(sys.argv[2]).read(), re.M)}
+assert len(rows) == 36 and sum(rows.values()) > 0, rows
+assert all(rows[r] == at_limit[r] for r in rows), [(r, rows[r], at_limit[r]) for r in rows if rows[r] != at_limit[r]]
+PY
+  # The same points under the set's priority give other counts; the two are not added up.
+  bash "$certify" "$work/per_set" random-integer:8:1 1-1 "${readings[0]}"
+  [ "$(table "$work/per_set")" != "$(table "$work/per_start" | grep -v '^a fixed priority')" ] || fail "per start = per set"
+  status=0
+  python3 "$summarize" "$work/per_set" "$work/per_start" > /dev/null 2> "$work/mixed.txt" || status=$?
+  [ $status = 2 ] || fail "per-set and per-start directories added up: exit $status, not 2"
+  grep -q "per-set (.*per_set/.*) and per-start (.*per_start/" "$work/mixed.txt" || fail "the mixed directories are not named"
+  status=0
+  "$EXPERIMENT_PRIORITY_LOOPS" random-integer:8:1 1-1 200 --order-seeds per-each 2> /dev/null || status=$?
+  [ $status = 2 ] || fail "--order-seeds per-each: exit $status, not 2"
+fi
 echo "certification pipeline: all checks passed"
