@@ -5,7 +5,8 @@
 # shards and unfinished files, and refuses a shard given twice and bad files.
 # The shards kept in doc/Edge_swapping_3/results/random12all/ add up to the
 # table of results/random12all_shards.md, and the kept set 3 of the 12 random
-# points gives its table in results/stream_topcom.md.
+# points, and its three sets run with a priority per start, give their tables
+# in results/stream_topcom.md.
 #
 #   streamed_shards.sh EDGE_SWAP SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -97,4 +98,15 @@ awk '/^## 12 random integer points, set 3/ { on = 1; next } on && /^## / { exit 
 diff <(table set3.txt) <(table set3_section.md) ||
   fail "results/random12_set3.jsonl.xz does not give the set 3 table of results/stream_topcom.md"
 grep -q 'stopped early' set3.txt && fail "the kept set 3 file is unfinished"
+# The three sets run with a priority per start, kept whole, give their tables in stream_topcom.md.
+for set in 1 2 3; do
+  kept_set=$src/doc/Edge_swapping_3/results/random12_per_start/set$set.jsonl.xz
+  $summarize "$kept_set" > per_start_set$set.txt
+  awk -v head="### Set $set, a priority per start" '$0 == head { on = 1; next } on && /^##/ { exit } on' \
+    "$src/doc/Edge_swapping_3/results/stream_topcom.md" > per_start_set$set.md
+  [ "$(table per_start_set$set.md | wc -l)" -ge 3 ] || fail "stream_topcom.md has no table for set $set per start"
+  diff <(table per_start_set$set.txt) <(table per_start_set$set.md) ||
+    fail "results/random12_per_start/set$set.jsonl.xz does not give its table in results/stream_topcom.md"
+  grep -q 'stopped early' per_start_set$set.txt && fail "the kept set $set per start is unfinished"
+done
 echo "streamed shards: all checks passed"
