@@ -355,9 +355,12 @@ int run(int argc, char** argv)
     std::cout << "fewest swaps in a certified loop: ";
     if(loops_seen == 0) std::cout << "- (no loop)\n";
     else
-      std::cout << fewest_swaps << " (seed " << fewest_seed << ", triangulation " << fewest_start
-                << (order_seeds == ES::ORDER_SEED_PER_START ? ", its priority seed " + std::to_string(ES::order_seed_of_start(unsigned(fewest_seed), fewest_start)) : std::string())
-                << ")\n";
+    {
+      std::string priority; // the start's own seed, which its case file holds
+      if(order_seeds == ES::ORDER_SEED_PER_START)
+        priority = ", its priority seed " + std::to_string(ES::order_seed_of_start(unsigned(fewest_seed), fewest_start));
+      std::cout << fewest_swaps << " (seed " << fewest_seed << ", triangulation " << fewest_start << priority << ")\n";
+    }
     // The runs at the limit that are not certified loops: what became of them by the trace limit.
     std::cout << "at the limit, not certified: " << ended_later << " ended after cycle " << max_cycles
               << " on CGAL's triangulation, " << stuck_later << " ended stuck after it, " << unsettled
