@@ -160,7 +160,8 @@ def main():
         fewest = row.get("fewest")
         where = (f"{fewest['loop_swaps']} ({fewest['loop_to'] - fewest['loop_from']}; {fewest['case']})"
                  if fewest else "")
-        print(f"| {reading or '(package)'} | {order} | {sum(counted.values())} | {counted.get('certified', 0)} | "
+        name = reading or "the package's"  # its cases carry no reading
+        print(f"| {name} | {order} | {sum(counted.values())} | {counted.get('certified', 0)} | "
               f"{counted.get('ended later', 0)} | {counted.get('not settled', 0)} | {other} | {where} |")
     refused = sum(1 for d in done.values() if d["status"] in ("checker refused", "replay failed"))
     if refused:

@@ -17,6 +17,8 @@
 #                reading in 3 orders (6 runs each)
 #   two_spheres_package  the two-spheres sets, seeds 1-3, 6 runs each
 #   grid332      the 3x3x2 grid: plain and the package's helper in 3 orders
+#                (123,182,774 triangulations: about 93 hours of one thread
+#                here, doc/Edge_swapping_3/results/grid332.md)
 #   random12all  random integer set of 12 points, seed 1, 93 runs each
 set -euo pipefail
 out=${1:?usage: stream_topcom.sh OUTDIR [THREADS [STEP ...]]}
