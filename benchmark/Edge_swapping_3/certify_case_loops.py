@@ -81,7 +81,8 @@ def certify(case_path, edge_swap, check_trace, trace_limit):
                               loop_swaps=sum(swaps.get(r, 0) for r in range(a + 1, b + 1)))
                 return result
             if verdict.get("end") != "cycle limit reached":
-                result.update(status="ended later", end=verdict.get("end"), rounds=verdict.get("rounds"))
+                result.update(status="ended later", end=verdict.get("end"), rounds=verdict.get("rounds"),
+                              ends_on_delaunay=verdict.get("ends_on_delaunay"))
                 return result
         result.update(status="not settled", traced_to=limit)
         return result

@@ -4,8 +4,9 @@
 # edge_swap experiment saves from scrambled starts of the 3x3x2 grid, under
 # every reading, are replayed with traces and checked apart; every fixed-order
 # run at the limit is a certified loop, and their count per reading is the
-# experiment's. A checker that refuses makes it exit 1; bad arguments, a bad
-# case and a bad output file exit 2 with no file written.
+# experiment's. A run that ends after the limit is told apart; runs traced too
+# briefly, or a checker that refuses, make it exit 1; bad arguments, a bad case
+# and a bad output file exit 2 with no file written.
 #
 #   case_loop_certification.sh EDGE_SWAP CHECK_TRACE SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -50,6 +51,20 @@ grep -q "^| until-destroyed,pass-over,no-swap,same-cycle | priority |" "$work/ta
 cp "$work/loops.jsonl" "$work/first.jsonl"
 certify "$work/cases" "$work/loops.jsonl" > /dev/null || fail "the resumed call failed"
 cmp -s "$work/loops.jsonl" "$work/first.jsonl" || fail "the resumed file changed"
+
+# A run at the limit that ends later (seed 1,786 ends on CGAL's triangulation at cycle 280),
+# and runs traced too briefly to be settled (exit 1).
+"$edge_swap" experiment -o "$work/later.jsonl" --families grid-3x3x2 --sizes 18 --seeds 1786 --starts scramble:1000 \
+  --strategies helper --orders priority --readings "never-cleared,any-tetrahedron,no-swap" --max-cycles 200 \
+  --threads 1 --cases "$work/later_cases" > /dev/null 2>&1
+certify "$work/later_cases" "$work/later_loops.jsonl" > /dev/null || fail "exit $? on a run that ends later"
+grep -q '"ends_on_delaunay": true.*"rounds": 280.*"status": "ended later"' "$work/later_loops.jsonl" ||
+  fail "seed 1786 did not end later on CGAL's triangulation: $(cat "$work/later_loops.jsonl")"
+set +e
+certify "$work/cases" "$work/short.jsonl" --trace-limit 3 > /dev/null
+rc=$?
+set -e
+[ $rc -eq 1 ] && grep -q '"not settled"' "$work/short.jsonl" || fail "runs traced to cycle 3: exit $rc"
 
 # A checker that refuses every trace: exit 1, and the refusal is in the lines.
 printf '#!/bin/sh\necho "{\\"confirmed\\":false,\\"error\\":\\"refused\\"}"\nexit 1\n' > "$work/refuse"
