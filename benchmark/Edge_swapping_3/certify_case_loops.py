@@ -56,7 +56,7 @@ def certify(case_path, edge_swap, check_trace, trace_limit):
     if case.get("order") != "priority":
         result["status"] = "not certifiable (order " + str(case.get("order")) + ")"
         return result
-    limit = trace_limit or 8 * int(case.get("max_cycles", 200))
+    limit = trace_limit or 8 * case.get("max_cycles", 200)
     with tempfile.TemporaryDirectory() as work:
         trace = os.path.join(work, "trace.jsonl")
         for cycles in [c for c in LADDER if c < limit] + [limit]:
@@ -102,8 +102,8 @@ def main():
     if not os.path.isdir(args.cases):
         print(f"certify_case_loops.py: '{args.cases}' is not a folder of cases", file=sys.stderr)
         return 2
-    if args.jobs < 1 or args.trace_limit < 0:
-        print("certify_case_loops.py: --jobs is at least 1 and --trace-limit at least 0", file=sys.stderr)
+    if not 1 <= args.jobs <= 256 or not 0 <= args.trace_limit <= 1000000000:
+        print("certify_case_loops.py: --jobs is from 1 to 256 and --trace-limit from 0 to 1000000000", file=sys.stderr)
         return 2
     for tool in (args.edge_swap, args.check_trace):
         if not os.access(tool, os.X_OK):
@@ -119,6 +119,9 @@ def main():
                 case = json.load(f)
             if not isinstance(case, dict) or not isinstance(case.get("order"), str) or "instance" not in case:
                 raise ValueError("not a case of edge_swap experiment --cases")
+            limit = case.get("max_cycles", 200)  # the trace limit is 8 times it
+            if type(limit) is not int or not 1 <= limit <= 125000000:
+                raise ValueError(f"max_cycles {limit!r} is not a whole number from 1 to 125000000")
         except (OSError, UnicodeDecodeError, ValueError) as e:
             print(f"certify_case_loops.py: {os.path.join(args.cases, n)}: {e}", file=sys.stderr)
             return 2

@@ -76,11 +76,17 @@ set -e
 [ $rc -eq 1 ] && grep -q '"checker refused"' "$work/refused.jsonl" || fail "a refusing checker: exit $rc"
 
 # Bad arguments and input: exit 2, a message, no file.
-mkdir "$work/empty" "$work/bad_case"
+mkdir "$work/empty" "$work/bad_case" "$work/bad_limit"
 echo '{"points": [' > "$work/bad_case/broken.json"
+python3 -c "
+import json, os, sys
+name = sorted(os.listdir(sys.argv[1]))[0]
+case = json.load(open(os.path.join(sys.argv[1], name)))
+case['max_cycles'] = 1e30
+json.dump(case, open(os.path.join(sys.argv[2], name), 'w'))" "$work/cases" "$work/bad_limit"
 echo 'not json' > "$work/bad_out.jsonl"
 for args in "$work/none $work/bad.jsonl" "$work/empty $work/bad.jsonl" "$work/bad_case $work/bad.jsonl" \
-            "$work/cases $work/bad.jsonl --jobs 0" "$work/cases $work/bad_out.jsonl"; do
+            "$work/cases $work/bad.jsonl --jobs 0" "$work/cases $work/bad_out.jsonl" "$work/bad_limit $work/bad.jsonl"; do
   read -ra a <<< "$args"
   set +e
   certify "${a[@]}" > /dev/null 2> "$work/err.txt"
