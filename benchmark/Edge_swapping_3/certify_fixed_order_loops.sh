@@ -8,7 +8,7 @@
 # again, so the script resumes where it stopped. Two processes given disjoint
 # reading lists share the work.
 #
-#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]
+#   certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--stream-batch B] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]
 #   (default: all 36 readings)
 #
 # CASE and SEEDS as for experiment_priority_loops; the streams order the faces
@@ -20,18 +20,21 @@
 #   certify_fixed_order_loops.sh OUT/set1_shard0 random-integer:12:1 1-1 --shard 0/4 until-destroyed,pass-over,no-swap-no-tag
 # --order-seeds per-start gives each start its own priority, as edge_swap
 # experiment's option of that name does.
-# --hold N, --trace-limit N and --order-seeds are passed on to experiment_priority_loops
+# --stream-batch B makes the shards blocks of B starts, those of edge_swap experiment
+# --stream --stream-batch B --shard I/N (4096 there by default), to certify a shard of a
+# stream and set its counts beside the stream's.
+# --stream-batch, --hold N, --trace-limit N and --order-seeds are passed on to experiment_priority_loops
 # (--hold 0: a set known to have more than 10^6 triangulations is streamed
 # without enumerating it first; runs at the limit are traced on to cycle 1600,
 # or N, to certify loops that close after cycle 200).
 set -euo pipefail
-usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]"
+usage="usage: certify_fixed_order_loops.sh OUTDIR CASE SEEDS [--shard I/N] [--stream-batch B] [--hold N] [--trace-limit N] [--order-seeds per-set|per-start] [READING ...]"
 out=${1:?$usage}
 case_=${2:?$usage}
 seeds=${3:?$usage}
 shift 3
 options=() # passed on
-while [ "${1:-}" = --shard ] || [ "${1:-}" = --hold ] || [ "${1:-}" = --trace-limit ] || [ "${1:-}" = --order-seeds ]; do
+while [ "${1:-}" = --shard ] || [ "${1:-}" = --stream-batch ] || [ "${1:-}" = --hold ] || [ "${1:-}" = --trace-limit ] || [ "${1:-}" = --order-seeds ]; do
   options+=("$1" "${2:?$usage}")
   shift 2
 done

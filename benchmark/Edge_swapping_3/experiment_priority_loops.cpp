@@ -4,14 +4,19 @@
 // each seed; how many starts are still swapping at the cycle limit, and how
 // many end stuck (possible in the readings that end on a cycle without swaps).
 //
-//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] [--trace-limit N]
-//                             [--order-seeds per-set|per-start]
+//   experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--stream-batch B] [--hold N]
+//                             [--trace-limit N] [--order-seeds per-set|per-start]
 //   experiment_priority_loops --list-readings     (the 36 readings' names, one a line)
 //
 // SEEDS is LAST (seeds 1 to LAST) or FIRST-LAST; the laboratory's streams
 // order the faces of point set SET by seed SET. With --shard I/N, only the
 // triangulations numbered I modulo N (in TOPCOM's order) are starts: N shards
-// together are the whole run, and their counts add up. With --order-seeds
+// together are the whole run, and their counts add up. With --stream-batch B,
+// the shards take blocks of B triangulations instead: the block numbered K
+// (triangulations K B to K B + B - 1) is in shard K modulo N, as in `edge_swap
+// experiment --stream --stream-batch B --shard I/N` (B is 4096 there by
+// default), so a shard of a stream can be certified on its own and its counts
+// compared with the stream's. With --order-seeds
 // per-start, the triangulation numbered I runs the priority of the seed
 // order_seed_of_start(SEED, I), as `edge_swap experiment --order-seeds
 // per-start` does: each start its own fixed order (the default, per-set,
@@ -69,7 +74,7 @@ namespace {
 
 const char* const usage =
   "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] "
-  "[--trace-limit N] [--order-seeds per-set|per-start]\n";
+  "[--stream-batch B] [--trace-limit N] [--order-seeds per-set|per-start]\n";
 
 /// The checker refused a trace: the run stops.
 struct Refused
@@ -83,12 +88,13 @@ int run(int argc, char** argv)
     for(const ES::Helper_reading& reading : ES::all_helper_readings()) std::cout << ES::helper_reading_name(reading) << '\n';
     return 0;
   }
-  std::size_t shard = 0, shards = 1, hold_limit = 1000000, trace_limit = 0;
+  std::size_t shard = 0, shards = 1, batch = 1, hold_limit = 1000000, trace_limit = 0;
   ES::Order_seeds order_seeds = ES::ORDER_SEED_PER_SET;
   for(int k = 1; k < argc;)
   {
     const std::string option = argv[k];
-    if(option != "--shard" && option != "--hold" && option != "--trace-limit" && option != "--order-seeds")
+    if(option != "--shard" && option != "--stream-batch" && option != "--hold" && option != "--trace-limit" &&
+       option != "--order-seeds")
     {
       ++k;
       continue;
@@ -112,6 +118,8 @@ int run(int argc, char** argv)
         hold_limit = std::stoul(value);
       else if(ok && option == "--trace-limit")
         trace_limit = std::stoul(value);
+      else if(ok && option == "--stream-batch")
+        ok = (batch = std::stoul(value)) > 0;
       else if(ok)
       {
         const auto slash = value.find('/');
@@ -127,7 +135,10 @@ int run(int argc, char** argv)
     if(!ok)
     {
       std::cerr << "experiment_priority_loops: " << option
-                << (option == "--shard" ? " I/N, with whole numbers I < N" : " N, a whole number") << ", not '" << value
+                << (option == "--shard"          ? " I/N, with whole numbers I < N"
+                    : option == "--stream-batch" ? " B, a whole number at least 1"
+                                                 : " N, a whole number")
+                << ", not '" << value
                 << "'\n";
       return 2;
     }
@@ -217,16 +228,17 @@ int run(int argc, char** argv)
   held.truncated = true; // --hold 0: streamed, without enumerating first
   if(hold_limit > 0) held = ES::IO::topcom_triangulations(c.points, hold_limit);
   if(held.truncated) held.triangulations = decltype(held.triangulations)(); // memory back
+  const auto in_shard = [&](std::size_t t) { return (t / batch) % shards == shard; };
   const auto for_each_start = [&](auto visit) {
     if(!held.truncated)
     {
       for(std::size_t t = 0; t < held.triangulations.size(); ++t)
-        if(t % shards == shard) visit(t, held.triangulations[t]);
+        if(in_shard(t)) visit(t, held.triangulations[t]);
       return;
     }
     ES::IO::for_each_topcom_triangulation(c.points, std::size_t(-1),
                                           [&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
-                                            if(t % shards == shard) visit(t, cells);
+                                            if(in_shard(t)) visit(t, cells);
                                             return true;
                                           });
   };
@@ -237,7 +249,11 @@ int run(int argc, char** argv)
     std::cout << "more than " << hold_limit << " triangulations, streamed";
   else
     std::cout << held.triangulations.size() << " triangulations";
-  if(shards > 1) std::cout << ", shard " << shard << '/' << shards << " (the triangulations numbered " << shard << " modulo " << shards << ')';
+  if(shards > 1 && batch == 1)
+    std::cout << ", shard " << shard << '/' << shards << " (the triangulations numbered " << shard << " modulo " << shards << ')';
+  else if(shards > 1)
+    std::cout << ", shard " << shard << '/' << shards << " in blocks of " << batch << " (the blocks numbered " << shard
+              << " modulo " << shards << ')';
   if(order_seeds == ES::ORDER_SEED_PER_START) std::cout << ", a priority per start (--order-seeds per-start)";
   std::cout << '\n';
   c.strategy = ES::HELPER_STRATEGY;

@@ -7,7 +7,8 @@
 # three streamed shards. The counts are those of doc/Edge_swapping_3/conjectures.md.
 # With EDGE_SWAP, a priority per start (--order-seeds per-start) on 8 random
 # integer points under all 36 readings: the runs at the limit are those of
-# `edge_swap experiment --order-seeds per-start`, start for start in number.
+# `edge_swap experiment --order-seeds per-start`, start for start in number; and a
+# shard of a stream in its blocks (--stream-batch) against the stream's tallies.
 #
 #   certification_pipeline.sh EXPERIMENT_PRIORITY_LOOPS SOURCE_DIR WORK_DIR [EDGE_SWAP]
 set -euo pipefail
@@ -111,5 +112,40 @@ PY
   status=0
   "$EXPERIMENT_PRIORITY_LOOPS" random-integer:8:1 1-1 200 --order-seeds per-each 2> /dev/null || status=$?
   [ $status = 2 ] || fail "--order-seeds per-each: exit $status, not 2"
+
+  # A shard of a stream, in its blocks (--stream-batch): shard 1/3 of the 132 triangulations in
+  # blocks of 16 is blocks 1, 4 and 7, 48 starts; under each of the 36 readings its runs at the
+  # limit are those the stream's tallies count for the same shard, and every one is a loop.
+  bash "$certify" "$work/stream_shard" random-integer:8:1 1-1 --shard 1/3 --stream-batch 16 --hold 0
+  grep -q "^8 points, triangulations streamed, shard 1/3 in blocks of 16" "$work/stream_shard/${readings[0]}.txt" ||
+    fail "the shard in blocks does not say so"
+  python3 "$summarize" "$work/stream_shard" > "$work/stream_shard.md" || fail "stream shard: a run at the limit not certified"
+  grep -q '^readings complete: 36; 1,728 runs, 86 at the limit, 86 certified loops' "$work/stream_shard.md" ||
+    fail "stream shard: not 36 readings of 48 runs with 86 loops"
+  "$edge_swap" experiment -o "$work/stream_shard.jsonl" --starts topcom --stream --stream-batch 16 --shard 1/3 \
+    --max-cycles 200 --threads 1 --strategies helper --orders priority --families random-integer --sizes 8 --seeds 1 \
+    --readings all > /dev/null 2>&1 || fail "edge_swap experiment --stream --stream-batch 16 --shard 1/3"
+  python3 - "$work/stream_shard.jsonl" "$work/stream_shard.md" << 'PY' || fail "stream shard: the counts differ from the stream's"
+import collections, json, re, sys
+at_limit, starts = collections.Counter(), set()
+for line in open(sys.argv[1]):
+    tally = json.loads(line).get("tally")
+    if tally is None or tally["count"] == 0:
+        continue
+    starts.add(tally["first"])
+    for row in tally["rows"]:
+        if row["order"] == "priority":
+            at_limit[row.get("reading", "until-destroyed,pass-over,no-swap-no-tag")] += row["limit"]  # the package's: no name
+rows = {m.group(1): int(m.group(2).replace(",", "")) for m in
+        re.finditer(r"^\| `([^`]+)` \| [\d,]+ \| ([\d,]+) \|", open(sys.argv[2]).read(), re.M)}
+assert starts == {16, 64, 112}, starts
+assert len(rows) == 36 and len(at_limit) == 36, (rows, at_limit)
+assert rows == at_limit, [(r, rows[r], at_limit[r]) for r in rows if rows[r] != at_limit[r]]
+PY
+  for bad in 0 x 99999999999999999999999; do
+    status=0
+    "$EXPERIMENT_PRIORITY_LOOPS" random-integer:8:1 1-1 200 --shard 1/3 --stream-batch $bad 2> /dev/null || status=$?
+    [ $status = 2 ] || fail "--stream-batch $bad: exit $status, not 2"
+  done
 fi
 echo "certification pipeline: all checks passed"
