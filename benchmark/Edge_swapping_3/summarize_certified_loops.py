@@ -39,7 +39,14 @@ def all_readings():
         return []
 
 
-def main(dirs):
+class Mixed(Exception):
+    """Per-set and per-start directories given together."""
+
+
+def collect(dirs):
+    """Per reading, the counts summed over dirs (runs, at the limit, loops certified, ended later,
+    not settled, stuck); the seconds per reading; in how many dirs each reading is complete; and
+    the kinds of order seeds seen ({"per-set" or "per-start": the first file of that kind})."""
     totals = collections.OrderedDict()
     seconds = collections.Counter()
     complete = collections.Counter()
@@ -57,10 +64,8 @@ def main(dirs):
             kind = "per-start" if lines and "a priority per start" in lines[0] else "per-set"
             kinds.setdefault(kind, os.path.join(d, name))
             if len(kinds) > 1:
-                sys.stderr.write("summarize_certified_loops.py: runs with --order-seeds per-set (%s) and per-start "
-                                 "(%s) are other samples; summarize them apart\n"
-                                 % (kinds["per-set"], kinds["per-start"]))
-                return 2
+                raise Mixed("runs with --order-seeds per-set (%s) and per-start (%s) are other samples; "
+                            "summarize them apart" % (kinds["per-set"], kinds["per-start"]))
             runs, limit, certified, stuck = (int(found[-1].group(k + 1)) for k in range(4))
             # Files from before the trace limit (stop 35) have no such line: their runs
             # at the limit that are not certified are counted as not settled.
@@ -78,6 +83,15 @@ def main(dirs):
                     m = TIME.match(line.strip())
                     if m:
                         seconds[m.group(1)] += int(m.group(2))
+    return totals, seconds, complete, kinds
+
+
+def main(dirs):
+    try:
+        totals, seconds, complete, kinds = collect(dirs)
+    except Mixed as e:
+        sys.stderr.write("summarize_certified_loops.py: %s\n" % e)
+        return 2
     print("| reading | runs | still swapping at cycle 200 | loops certified | ended later | not settled | stuck "
           "| seconds |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|")

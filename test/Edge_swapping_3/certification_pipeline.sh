@@ -125,23 +125,24 @@ PY
   "$edge_swap" experiment -o "$work/stream_shard.jsonl" --starts topcom --stream --stream-batch 16 --shard 1/3 \
     --max-cycles 200 --threads 1 --strategies helper --orders priority --families random-integer --sizes 8 --seeds 1 \
     --readings all > /dev/null 2>&1 || fail "edge_swap experiment --stream --stream-batch 16 --shard 1/3"
-  python3 - "$work/stream_shard.jsonl" "$work/stream_shard.md" << 'PY' || fail "stream shard: the counts differ from the stream's"
-import collections, json, re, sys
-at_limit, starts = collections.Counter(), set()
-for line in open(sys.argv[1]):
-    tally = json.loads(line).get("tally")
-    if tally is None or tally["count"] == 0:
-        continue
-    starts.add(tally["first"])
-    for row in tally["rows"]:
-        if row["order"] == "priority":
-            at_limit[row.get("reading", "until-destroyed,pass-over,no-swap-no-tag")] += row["limit"]  # the package's: no name
-rows = {m.group(1): int(m.group(2).replace(",", "")) for m in
-        re.finditer(r"^\| `([^`]+)` \| [\d,]+ \| ([\d,]+) \|", open(sys.argv[2]).read(), re.M)}
-assert starts == {16, 64, 112}, starts
-assert len(rows) == 36 and len(at_limit) == 36, (rows, at_limit)
-assert rows == at_limit, [(r, rows[r], at_limit[r]) for r in rows if rows[r] != at_limit[r]]
-PY
+  against=$source_dir/benchmark/Edge_swapping_3/certified_against_stream.py
+  python3 "$against" --stream "$work/stream_shard.jsonl" --certified "$work/stream_shard" > "$work/against.md" ||
+    fail "stream shard: the counts differ from the stream's (exit $?)"
+  grep -q '^36 of 36 readings agree; the stream has 86 fixed-order runs at the limit$' "$work/against.md" ||
+    fail "stream shard: not 36 readings agreeing on 86 runs at the limit"
+  grep -qF '| `until-destroyed,any-tetrahedron,no-swap` | 48 | 10 | 48 | 10 | 10 | 0 | yes |' "$work/against.md" ||
+    fail "stream shard: until-destroyed,any-tetrahedron,no-swap is not 48 runs, 10 at the limit, 10 loops"
+  # Other starts (the per-start run) differ: exit 1. A stream cut short or not JSON: exit 2.
+  status=0
+  python3 "$against" --stream "$work/stream_shard.jsonl" --certified "$work/per_start" > /dev/null || status=$?
+  [ $status = 1 ] || fail "certified against other starts: exit $status, not 1"
+  head -n 2 "$work/stream_shard.jsonl" > "$work/cut.jsonl"
+  printf '{"tally": [1, 2]}\n' > "$work/not_a_stream.jsonl"
+  for bad in "$work/cut.jsonl" "$work/not_a_stream.jsonl" "$work/not_there.jsonl"; do
+    status=0
+    python3 "$against" --stream "$bad" --certified "$work/stream_shard" > /dev/null 2> "$work/against_bad.txt" || status=$?
+    [ $status = 2 ] && grep -qF "$bad" "$work/against_bad.txt" || fail "certified against $bad: exit $status, not 2 naming it"
+  done
   for bad in 0 x 99999999999999999999999; do
     status=0
     "$EXPERIMENT_PRIORITY_LOOPS" random-integer:8:1 1-1 200 --shard 1/3 --stream-batch $bad 2> /dev/null || status=$?

@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Sets the loops certified on a shard of a stream beside the stream's own
+# counts. STREAM files are the output of `edge_swap experiment --stream`
+# (only their tally lines are read); DIRs are those of
+# certify_fixed_order_loops.sh run on the same starts (the same point set,
+# seed and shard, with --stream-batch equal to the stream's batch). Per
+# reading it prints the helper's fixed-order (priority) runs and those at the
+# cycle limit as the stream tallied them, and the runs, runs at the limit,
+# loops certified and runs ending later that the certification found.
+#
+#   certified_against_stream.py --stream FILE [FILE ...] --certified DIR [DIR ...]
+#
+# Exit 0 when every reading of the stream is in the DIRs with the same runs
+# and runs at the limit, and each run at the limit is a certified loop or was
+# seen to end later; 1 when not; 2 on bad input (a file that is not there, not
+# JSON, or a stream that did not finish), naming the file and line.
+
+import argparse
+import collections
+import json
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import summarize_certified_loops  # noqa: E402
+
+PACKAGES_READING = "until-destroyed,pass-over,no-swap-no-tag"  # its rows carry no reading name
+
+
+class Bad(Exception):
+    pass
+
+
+def stream_counts(paths):
+    """Per reading, [fixed-order helper runs, of them at the cycle limit], summed over the files."""
+    counts = collections.defaultdict(lambda: [0, 0])
+    for path in paths:
+        finished = False
+        try:
+            with open(path) as f:
+                for number, line in enumerate(f, 1):
+                    try:
+                        tally = json.loads(line).get("tally")
+                        if tally is None:
+                            continue
+                        finished = finished or tally["complete"] is True
+                        for row in tally["rows"]:
+                            if row["strategy"] == "helper" and row["order"] == "priority":
+                                count = counts[row.get("reading", PACKAGES_READING)]
+                                count[0] += int(row["instances"])
+                                count[1] += int(row["limit"])
+                    except (ValueError, KeyError, TypeError, AttributeError) as e:
+                        raise Bad("%s:%d: not a stream's line (%s)" % (path, number, e))
+        except OSError as e:
+            raise Bad("%s: %s" % (path, e.strerror))
+        if not finished:
+            raise Bad("%s: the stream did not finish (no tally with \"complete\": true)" % path)
+    if not counts:
+        raise Bad("no fixed-order helper runs in " + ", ".join(paths))
+    return counts
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(description="loops certified on a stream's shard against the stream's counts")
+    parser.add_argument("--stream", nargs="+", required=True, metavar="FILE")
+    parser.add_argument("--certified", nargs="+", required=True, metavar="DIR")
+    args = parser.parse_args(argv)
+    for d in args.certified:
+        if not os.path.isdir(d):
+            sys.stderr.write("certified_against_stream.py: not a directory: %s\n" % d)
+            return 2
+    try:
+        stream = stream_counts(args.stream)
+        totals, _, complete, _ = summarize_certified_loops.collect(args.certified)
+    except (Bad, summarize_certified_loops.Mixed) as e:
+        sys.stderr.write("certified_against_stream.py: %s\n" % e)
+        return 2
+    print("| reading | stream: runs | stream: at the limit | certified: runs | at the limit | loops certified "
+          "| ended later | same |")
+    print("|---|---:|---:|---:|---:|---:|---:|---|")
+    good = 0
+    for reading in sorted(stream):
+        runs, limit = stream[reading]
+        if complete[reading] == len(args.certified):
+            c_runs, c_limit, loops, later = totals[reading][:4]
+            same = c_runs == runs and c_limit == limit and loops + later == limit
+            print(f"| `{reading}` | {runs:,} | {limit:,} | {c_runs:,} | {c_limit:,} | {loops:,} | {later:,} | "
+                  f"{'yes' if same else 'NO'} |")
+        else:
+            same = False
+            print(f"| `{reading}` | {runs:,} | {limit:,} | - | - | - | - | not certified |")
+        good += same
+    at_limit = sum(limit for _, limit in stream.values())
+    print()
+    print(f"{good} of {len(stream)} readings agree; the stream has {at_limit:,} fixed-order runs at the limit")
+    return 0 if good == len(stream) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
