@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Sets the loops certified on a shard of a stream beside the stream's own
 # counts. STREAM files are the output of `edge_swap experiment --stream`
-# (only their tally lines are read); DIRs are those of
+# (only their tally lines are read; FILE.xz is read as xz); DIRs are those of
 # certify_fixed_order_loops.sh run on the same starts (the same point set,
 # seed and shard, with --stream-batch equal to the stream's batch). Per
 # reading it prints the helper's fixed-order (priority) runs and those at the
@@ -19,6 +19,7 @@
 import argparse
 import collections
 import json
+import lzma
 import os
 import sys
 
@@ -38,7 +39,7 @@ def stream_counts(paths):
     for path in paths:
         finished = False
         try:
-            with open(path) as f:
+            with (lzma.open(path, "rt") if path.endswith(".xz") else open(path)) as f:
                 for number, line in enumerate(f, 1):
                     try:
                         tally = json.loads(line).get("tally")
@@ -53,7 +54,9 @@ def stream_counts(paths):
                     except (ValueError, KeyError, TypeError, AttributeError) as e:
                         raise Bad("%s:%d: not a stream's line (%s)" % (path, number, e))
         except OSError as e:
-            raise Bad("%s: %s" % (path, e.strerror))
+            raise Bad("%s: %s" % (path, e.strerror or e))
+        except (lzma.LZMAError, EOFError, UnicodeDecodeError) as e:
+            raise Bad("%s: not readable as %s (%s)" % (path, "xz" if path.endswith(".xz") else "text", e))
         if not finished:
             raise Bad("%s: the stream did not finish (no tally with \"complete\": true)" % path)
     if not counts:

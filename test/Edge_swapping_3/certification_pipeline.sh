@@ -128,17 +128,21 @@ PY
   against=$source_dir/benchmark/Edge_swapping_3/certified_against_stream.py
   python3 "$against" --stream "$work/stream_shard.jsonl" --certified "$work/stream_shard" > "$work/against.md" ||
     fail "stream shard: the counts differ from the stream's (exit $?)"
+  xz -c "$work/stream_shard.jsonl" > "$work/stream_shard.jsonl.xz"
+  python3 "$against" --stream "$work/stream_shard.jsonl.xz" --certified "$work/stream_shard" | cmp -s - "$work/against.md" ||
+    fail "the stream read from xz gives another table"
   grep -q '^36 of 36 readings agree; the stream has 86 fixed-order runs at the limit$' "$work/against.md" ||
     fail "stream shard: not 36 readings agreeing on 86 runs at the limit"
   grep -qF '| `until-destroyed,any-tetrahedron,no-swap` | 48 | 10 | 48 | 10 | 10 | 0 | yes |' "$work/against.md" ||
     fail "stream shard: until-destroyed,any-tetrahedron,no-swap is not 48 runs, 10 at the limit, 10 loops"
-  # Other starts (the per-start run) differ: exit 1. A stream cut short or not JSON: exit 2.
+  # Other starts (the per-start run) differ: exit 1. A stream cut short (as text or xz) or not JSON: exit 2.
   status=0
   python3 "$against" --stream "$work/stream_shard.jsonl" --certified "$work/per_start" > /dev/null || status=$?
   [ $status = 1 ] || fail "certified against other starts: exit $status, not 1"
   head -n 2 "$work/stream_shard.jsonl" > "$work/cut.jsonl"
   printf '{"tally": [1, 2]}\n' > "$work/not_a_stream.jsonl"
-  for bad in "$work/cut.jsonl" "$work/not_a_stream.jsonl" "$work/not_there.jsonl"; do
+  xz -c "$work/stream_shard.jsonl" | head -c 200 > "$work/cut.jsonl.xz"
+  for bad in "$work/cut.jsonl" "$work/not_a_stream.jsonl" "$work/not_there.jsonl" "$work/cut.jsonl.xz"; do
     status=0
     python3 "$against" --stream "$bad" --certified "$work/stream_shard" > /dev/null 2> "$work/against_bad.txt" || status=$?
     [ $status = 2 ] && grep -qF "$bad" "$work/against_bad.txt" || fail "certified against $bad: exit $status, not 2 naming it"
