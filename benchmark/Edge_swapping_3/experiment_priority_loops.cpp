@@ -73,8 +73,8 @@ namespace ES = CGAL::Edge_swapping_3;
 namespace {
 
 const char* const usage =
-  "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--hold N] "
-  "[--stream-batch B] [--trace-limit N] [--order-seeds per-set|per-start]\n";
+  "usage: experiment_priority_loops CASE SEEDS MAX_CYCLES [READING [SAVE_DIR]] [--shard I/N] [--stream-batch B] "
+  "[--hold N] [--trace-limit N] [--order-seeds per-set|per-start]\n";
 
 /// The checker refused a trace: the run stops.
 struct Refused
