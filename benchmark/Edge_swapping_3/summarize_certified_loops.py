@@ -12,7 +12,11 @@
 # run at the limit was neither certified a loop nor seen to end, so that no
 # such claim goes unnoticed. Directories run with a priority per start
 # (--order-seeds per-start) sample other orders than those run with the set's
-# seed: given both, it exits 2 and names one of each.
+# seed: given both, it exits 2 and names one of each. So does it for shards
+# that do not partition one set's starts together: the same shard twice, a
+# whole run beside a shard, or shards of other partitions (other N, or modulo
+# N beside blocks of B: --stream-batch). The set is read from progress.txt
+# (SPEC seeds A-B), the shard from each file's first line.
 #
 #   summarize_certified_loops.py OUTDIR [OUTDIR ...]
 
@@ -26,6 +30,8 @@ LINE = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops c
 LATER = re.compile(r"^at the limit, not certified: (\d+) ended after cycle \d+ on CGAL's triangulation, "
                    r"(\d+) ended stuck after it, (\d+) still swapping at cycle \d+ with no state repeated$")
 TIME = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, ")
+POINT_SET = re.compile(r"^(.*? seeds [^ ,]+)")
+SHARD = re.compile(r", shard (\d+)/(\d+)(?: in blocks of (\d+))?")
 
 
 def all_readings():
@@ -40,7 +46,36 @@ def all_readings():
 
 
 class Mixed(Exception):
-    """Per-set and per-start directories given together."""
+    """Directories that must not be added up: per-set beside per-start, or shards that are not
+    distinct parts of one partition of a set's starts."""
+
+
+def describe(shard):
+    index, count, batch = shard
+    return "the whole" if count is None else "shard %d/%d %s" % (
+        index, count, "modulo %d" % count if batch == 1 else "in blocks of %d" % batch)
+
+
+def check_partition(parts):
+    """parts: (directory, point set or None, (I, N, B) or (None, None, None) for a whole run).
+    Raises Mixed unless each set's directories are distinct shards of one partition."""
+    by_set = collections.defaultdict(list)
+    for d, point_set, shard in parts:
+        if point_set is not None:
+            by_set[point_set].append((d, shard))
+    for point_set, runs in by_set.items():
+        (d0, first), rest = runs[0], runs[1:]
+        seen = {first[0]: d0}
+        for d, shard in rest:
+            if first[0] is None or shard[0] is None:
+                raise Mixed("%s (%s) and %s (%s) both hold runs of %s" % (d0, describe(first), d, describe(shard),
+                                                                       point_set))
+            if shard[1:] != first[1:]:
+                raise Mixed("%s is %s and %s is %s of %s: other partitions of its starts" % (
+                    d0, describe(first), d, describe(shard), point_set))
+            if shard[0] in seen:
+                raise Mixed("%s and %s are both %s of %s" % (seen[shard[0]], d, describe(shard), point_set))
+            seen[shard[0]] = d
 
 
 def collect(dirs):
@@ -51,7 +86,9 @@ def collect(dirs):
     seconds = collections.Counter()
     complete = collections.Counter()
     kinds = {}  # per-set or per-start: the first file of that kind
+    parts = []  # (directory, point set, shard) for check_partition
     for d in dirs:
+        shards = {}  # shard -> the first file saying so
         for name in sorted(os.listdir(d)):
             if not name.endswith(".txt") or name == "progress.txt":
                 continue
@@ -61,7 +98,12 @@ def collect(dirs):
             found = [m for m in map(LINE.match, lines) if m]
             if not found:
                 continue
-            kind = "per-start" if lines and "a priority per start" in lines[0] else "per-set"
+            m = SHARD.search(lines[0])
+            shard = (int(m.group(1)), int(m.group(2)), int(m.group(3) or 1)) if m else (None, None, None)
+            shards.setdefault(shard, os.path.join(d, name))
+            if len(shards) > 1:
+                raise Mixed("%s holds %s" % (d, " and ".join("%s (%s)" % (describe(k), f) for k, f in shards.items())))
+            kind = "per-start" if "a priority per start" in lines[0] else "per-set"
             kinds.setdefault(kind, os.path.join(d, name))
             if len(kinds) > 1:
                 raise Mixed("runs with --order-seeds per-set (%s) and per-start (%s) are other samples; "
@@ -77,12 +119,19 @@ def collect(dirs):
                 row[k] += value
             complete[reading] += 1
         progress = os.path.join(d, "progress.txt")
+        point_set = None  # not known without progress.txt: not checked
         if os.path.exists(progress):
             with open(progress) as f:
                 for line in f:
                     m = TIME.match(line.strip())
                     if m:
                         seconds[m.group(1)] += int(m.group(2))
+                    m = POINT_SET.match(line)
+                    if m and point_set is None:
+                        point_set = m.group(1)
+        if shards:
+            parts.append((d, point_set, next(iter(shards))))
+    check_partition(parts)
     return totals, seconds, complete, kinds
 
 

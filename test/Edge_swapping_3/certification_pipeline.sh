@@ -43,6 +43,14 @@ for s in 0 1 2; do bash "$certify" "$work/shard$s" "$fixture" 1-20 --shard $s/3 
 grep -q "^8 points, triangulations streamed, shard 1/3" "$work/shard1/${readings[0]}.txt" || fail "shard 1/3 not streamed"
 [ "$(table "$work/shard0" "$work/shard1" "$work/shard2")" = "$whole" ] || fail "the three shards do not add up to the whole"
 [ "$(table "$work/shard0")" != "$whole" ] || fail "one shard is the whole"
+# Not a partition: the same shard twice, or the whole beside a shard (exit 2, naming both).
+for pair in "shard0 shard0" "whole shard1"; do
+  status=0
+  # shellcheck disable=SC2086 # two directory names
+  python3 "$summarize" $(printf "$work/%s " $pair) > /dev/null 2> "$work/not_a_partition.txt" || status=$?
+  [ $status = 2 ] || fail "$pair added up: exit $status, not 2"
+  grep -q "${pair% *}.* and .*${pair#* }" "$work/not_a_partition.txt" || fail "$pair: the directories are not named"
+done
 
 # A complete reading is not run again.
 before=$(wc -l < "$work/whole/progress.txt")
@@ -120,6 +128,12 @@ PY
   grep -q "^8 points, triangulations streamed, shard 1/3 in blocks of 16" "$work/stream_shard/${readings[0]}.txt" ||
     fail "the shard in blocks does not say so"
   python3 "$summarize" "$work/stream_shard" > "$work/stream_shard.md" || fail "stream shard: a run at the limit not certified"
+  # Shard 1/3 modulo 3 is other starts than shard 1/3 in blocks of 16: not added up (exit 2).
+  bash "$certify" "$work/modulo_shard" random-integer:8:1 1-1 --shard 1/3 "${readings[0]}"
+  status=0
+  python3 "$summarize" "$work/stream_shard" "$work/modulo_shard" > /dev/null 2> "$work/partitions.txt" || status=$?
+  [ $status = 2 ] && grep -q "in blocks of 16 and .*modulo_shard is shard 1/3 modulo 3 of random-integer:8:1 seeds 1-1" \
+    "$work/partitions.txt" || fail "shards in blocks and modulo N added up: exit $status, not 2 naming both"
   grep -q '^readings complete: 36; 1,728 runs, 86 at the limit, 86 certified loops' "$work/stream_shard.md" ||
     fail "stream shard: not 36 readings of 48 runs with 86 loops"
   "$edge_swap" experiment -o "$work/stream_shard.jsonl" --starts topcom --stream --stream-batch 16 --shard 1/3 \
