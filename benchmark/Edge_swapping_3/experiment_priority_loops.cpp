@@ -22,18 +22,22 @@
 // per-start` does: each start its own fixed order (the default, per-set,
 // gives every start SEED's).
 //
-// Up to 10^6 triangulations (--hold N: N) are held in memory; a point set
-// with more is streamed from TOPCOM again for each reading and seed, never
-// held. Finding that out costs enumerating the first 10^6 once more (about
-// 40 s and 1 GB for 12 points): --hold 0 streams from the start.
+// The starts (the shard's, with --shard) are enumerated by TOPCOM once and
+// held in memory when there are at most 10^6 of them (--hold N: N), so that
+// every reading and seed runs on the one enumeration; with more they are
+// streamed from TOPCOM again for each reading and seed, never held. Finding
+// that out costs one enumeration more (about 30 s and 1 GB for 12 points):
+// --hold 0 streams from the start. A shard of 1/64 of the 12 random points
+// (32,768 starts) is held in about 40 MB.
 //
 // CASE is a case file (its points are used), random-integer:N:SET for the
 // laboratory's N random integer points of set SET, or family:NAME:N:SEED for
 // any family of point_families.h (the degenerate sets among them).
 //
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
-// "cleared-each-cycle,any-tetrahedron,no-swap", or is "all" for the 36; the
-// default is the package's. With SAVE_DIR, the first certified loop of each
+// "cleared-each-cycle,any-tetrahedron,no-swap", or several separated by
+// spaces (run in that order), or is "all" for the 36; the default is the
+// package's. With SAVE_DIR, the first certified loop of each
 // reading is saved there as a case file with its trace, unless one of the
 // same size and reading is there already.
 //
@@ -178,10 +182,24 @@ int run(int argc, char** argv)
   std::vector<ES::Helper_reading> readings(1);
   if(argc >= 5 && std::string(argv[4]) == "all")
     readings = ES::all_helper_readings();
-  else if(argc >= 5 && !ES::helper_reading_from_name(argv[4], readings[0]))
+  else if(argc >= 5)
   {
-    std::cerr << "experiment_priority_loops: unknown reading '" << argv[4] << "'\n";
-    return 2;
+    readings.clear();
+    std::istringstream names(argv[4]);
+    for(std::string name; names >> name;)
+    {
+      readings.emplace_back();
+      if(!ES::helper_reading_from_name(name, readings.back()))
+      {
+        std::cerr << "experiment_priority_loops: unknown reading '" << name << "'\n";
+        return 2;
+      }
+    }
+    if(readings.empty())
+    {
+      std::cerr << "experiment_priority_loops: READING is empty\n";
+      return 2;
+    }
   }
   ES::Conjecture_case<K::Point_3> c;
   const std::string source = argv[1];
@@ -223,17 +241,33 @@ int run(int argc, char** argv)
   }
   else
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
-  // Held when there are at most hold_limit; else streamed from TOPCOM for each reading and seed.
-  ES::IO::Topcom_triangulations held;
-  held.truncated = true; // --hold 0: streamed, without enumerating first
-  if(hold_limit > 0) held = ES::IO::topcom_triangulations(c.points, hold_limit);
-  if(held.truncated) held.triangulations = decltype(held.triangulations)(); // memory back
   const auto in_shard = [&](std::size_t t) { return (t / batch) % shards == shard; };
+  // The shard's starts, held when there are at most hold_limit (one TOPCOM enumeration for every
+  // reading and seed); else streamed from TOPCOM again for each reading and seed.
+  std::vector<std::size_t> held_numbers; // in TOPCOM's order
+  std::vector<std::vector<std::array<std::size_t, 4>>> held_starts;
+  std::size_t enumerated = 0; // TOPCOM's triangulations, when the starts are held
+  bool streamed = hold_limit == 0; // --hold 0: without enumerating first
+  if(!streamed)
+  {
+    enumerated = ES::IO::for_each_topcom_triangulation(
+      c.points, std::size_t(-1), [&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
+        if(!in_shard(t)) return true;
+        if(held_starts.size() == hold_limit)
+        {
+          streamed = true; // too many to hold
+          return false;
+        }
+        held_numbers.push_back(t);
+        held_starts.push_back(cells);
+        return true;
+      });
+    if(streamed) held_numbers = decltype(held_numbers)(), held_starts = decltype(held_starts)(); // memory back
+  }
   const auto for_each_start = [&](auto visit) {
-    if(!held.truncated)
+    if(!streamed)
     {
-      for(std::size_t t = 0; t < held.triangulations.size(); ++t)
-        if(in_shard(t)) visit(t, held.triangulations[t]);
+      for(std::size_t k = 0; k < held_starts.size(); ++k) visit(held_numbers[k], held_starts[k]);
       return;
     }
     ES::IO::for_each_topcom_triangulation(c.points, std::size_t(-1),
@@ -243,12 +277,12 @@ int run(int argc, char** argv)
                                           });
   };
   std::cout << c.points.size() << " points, ";
-  if(held.truncated && hold_limit == 0)
+  if(streamed && hold_limit == 0)
     std::cout << "triangulations streamed";
-  else if(held.truncated)
-    std::cout << "more than " << hold_limit << " triangulations, streamed";
+  else if(streamed)
+    std::cout << "more than " << hold_limit << (shards > 1 ? " starts in the shard" : " triangulations") << ", streamed";
   else
-    std::cout << held.triangulations.size() << " triangulations";
+    std::cout << enumerated << " triangulations";
   if(shards > 1 && batch == 1)
     std::cout << ", shard " << shard << '/' << shards << " (the triangulations numbered " << shard << " modulo " << shards << ')';
   else if(shards > 1)
@@ -382,7 +416,7 @@ int run(int argc, char** argv)
               << " on CGAL's triangulation, " << stuck_later << " ended stuck after it, " << unsettled
               << " still swapping at cycle " << trace_limit << " with no state repeated\n";
     std::cout << "all seeds: " << runs << " runs, " << all_limit << " still swapping (" << all_certified
-              << " loops certified by the checker), " << all_stuck << " stuck\n";
+              << " loops certified by the checker), " << all_stuck << " stuck" << std::endl; // the reading is done
   }
   return 0;
 }

@@ -37,6 +37,11 @@ grep -qF '| `until-destroyed,pass-over,no-swap-no-tag` | 2,620 | 174 | 174 | 0 |
   fail "the package's reading: 2,620 runs, 174 loops certified"
 grep -qF '| `never-cleared,any-tetrahedron,no-swap,same-cycle` | 2,620 | 445 | 445 | 0 | 0 | 0 |' <<< "$whole" ||
   fail "never-cleared,any-tetrahedron,no-swap,same-cycle: 2,620 runs, 445 loops certified"
+# The two readings ran in one process (one TOPCOM enumeration); the second's file is that of a
+# process of its own.
+"$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 "${readings[1]}" | cmp -s - "$work/whole/${readings[1]}.txt" ||
+  fail "a reading run with another differs from it run alone"
+[ "$(grep -c "^$fixture seeds 1-20, " "$work/whole/progress.txt")" = 2 ] || fail "progress.txt has not one line a reading"
 
 # Three shards, streamed from TOPCOM (--hold 0), add up to the whole.
 for s in 0 1 2; do bash "$certify" "$work/shard$s" "$fixture" 1-20 --shard $s/3 --hold 0 "${readings[@]}"; done
