@@ -48,6 +48,15 @@ for s in 0 1 2; do bash "$certify" "$work/shard$s" "$fixture" 1-20 --shard $s/3 
 grep -q "^8 points, triangulations streamed, shard 1/3" "$work/shard1/${readings[0]}.txt" || fail "shard 1/3 not streamed"
 [ "$(table "$work/shard0" "$work/shard1" "$work/shard2")" = "$whole" ] || fail "the three shards do not add up to the whole"
 [ "$(table "$work/shard0")" != "$whole" ] || fail "one shard is the whole"
+# Held (44 starts) or, with more than --hold of them, streamed again a reading: the same runs.
+"$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 "${readings[*]}" --shard 1/3 > "$work/shard1_held.txt"
+"$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 "${readings[*]}" --shard 1/3 --hold 10 > "$work/shard1_over.txt"
+grep -q "^8 points, 131 triangulations, shard 1/3" "$work/shard1_held.txt" || fail "shard 1/3 not held"
+grep -q "^8 points, more than 10 starts in the shard, streamed, shard 1/3" "$work/shard1_over.txt" ||
+  fail "shard 1/3 held with more starts than --hold"
+cmp -s <(tail -n +2 "$work/shard1_held.txt") <(tail -n +2 "$work/shard1_over.txt") &&
+  cmp -s <(tail -n +3 "$work/shard1_held.txt" | sed -n '1,/^all seeds/p') <(tail -n +3 "$work/shard1/${readings[0]}.txt") ||
+  fail "shard 1/3 held, streamed and in its file differ"
 # Not a partition: the same shard twice, or the whole beside a shard (exit 2, naming both).
 for pair in "shard0 shard0" "whole shard1"; do
   status=0
