@@ -4,7 +4,9 @@
 # points of fixtures/helper_priority_loop_8_points.json from each of their 131
 # fine triangulations (TOPCOM), seeds 1 to 20, under two readings, through
 # certify_fixed_order_loops.sh and summarize_certified_loops.py, whole and in
-# three streamed shards. The counts are those of doc/Edge_swapping_3/conjectures.md.
+# three streamed shards (held or streamed, the same runs; directories that do
+# not partition the starts refused). The counts are those of
+# doc/Edge_swapping_3/conjectures.md.
 # With EDGE_SWAP, a priority per start (--order-seeds per-start) on 8 random
 # integer points under all 36 readings: the runs at the limit are those of
 # `edge_swap experiment --order-seeds per-start`, start for start in number; and a
@@ -142,14 +144,14 @@ PY
   grep -q "^8 points, triangulations streamed, shard 1/3 in blocks of 16" "$work/stream_shard/${readings[0]}.txt" ||
     fail "the shard in blocks does not say so"
   python3 "$summarize" "$work/stream_shard" > "$work/stream_shard.md" || fail "stream shard: a run at the limit not certified"
+  grep -q '^readings complete: 36; 1,728 runs, 86 at the limit, 86 certified loops' "$work/stream_shard.md" ||
+    fail "stream shard: not 36 readings of 48 runs with 86 loops"
   # Shard 1/3 modulo 3 is other starts than shard 1/3 in blocks of 16: not added up (exit 2).
   bash "$certify" "$work/modulo_shard" random-integer:8:1 1-1 --shard 1/3 "${readings[0]}"
   status=0
   python3 "$summarize" "$work/stream_shard" "$work/modulo_shard" > /dev/null 2> "$work/partitions.txt" || status=$?
   [ $status = 2 ] && grep -q "in blocks of 16 and .*modulo_shard is shard 1/3 modulo 3 of random-integer:8:1 seeds 1-1" \
     "$work/partitions.txt" || fail "shards in blocks and modulo N added up: exit $status, not 2 naming both"
-  grep -q '^readings complete: 36; 1,728 runs, 86 at the limit, 86 certified loops' "$work/stream_shard.md" ||
-    fail "stream shard: not 36 readings of 48 runs with 86 loops"
   "$edge_swap" experiment -o "$work/stream_shard.jsonl" --starts topcom --stream --stream-batch 16 --shard 1/3 \
     --max-cycles 200 --threads 1 --strategies helper --orders priority --families random-integer --sizes 8 --seeds 1 \
     --readings all > /dev/null 2>&1 || fail "edge_swap experiment --stream --stream-batch 16 --shard 1/3"
