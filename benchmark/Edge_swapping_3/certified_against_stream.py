@@ -75,7 +75,7 @@ def main(argv):
             return 2
     try:
         stream = stream_counts(args.stream)
-        totals, _, complete, _ = summarize_certified_loops.collect(args.certified)
+        totals, _, complete, _, _ = summarize_certified_loops.collect(args.certified)
     except (Bad, summarize_certified_loops.Mixed) as e:
         sys.stderr.write("certified_against_stream.py: %s\n" % e)
         return 2

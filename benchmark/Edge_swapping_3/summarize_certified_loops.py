@@ -58,7 +58,8 @@ def describe(shard):
 
 def check_partition(parts):
     """parts: (directory, point set or None, (I, N, B) or (None, None, None) for a whole run).
-    Raises Mixed unless each set's directories are distinct shards of one partition."""
+    Raises Mixed unless each set's directories are distinct shards of one partition; returns,
+    per set given in shards, a line saying which shards of how many are there."""
     by_set = collections.defaultdict(list)
     for d, point_set, shard in parts:
         if point_set is not None:
@@ -76,12 +77,21 @@ def check_partition(parts):
             if shard[0] in seen:
                 raise Mixed("%s and %s are both %s of %s" % (seen[shard[0]], d, describe(shard), point_set))
             seen[shard[0]] = d
+    coverage = []
+    for point_set, runs in by_set.items():
+        index, count, batch = runs[0][1]
+        if count is not None:
+            coverage.append("%s: %d of %d shards (%s), %s" % (
+                point_set, len(runs), count, ", ".join(str(i) for i in sorted(r[1][0] for r in runs)),
+                "modulo %d" % count if batch == 1 else "in blocks of %d" % batch))
+    return coverage
 
 
 def collect(dirs):
     """Per reading, the counts summed over dirs (runs, at the limit, loops certified, ended later,
-    not settled, stuck); the seconds per reading; in how many dirs each reading is complete; and
-    the kinds of order seeds seen ({"per-set" or "per-start": the first file of that kind})."""
+    not settled, stuck); the seconds per reading; in how many dirs each reading is complete; the
+    kinds of order seeds seen ({"per-set" or "per-start": the first file of that kind}); and,
+    per set given in shards, which shards are there."""
     totals = collections.OrderedDict()
     seconds = collections.Counter()
     complete = collections.Counter()
@@ -131,13 +141,13 @@ def collect(dirs):
                         point_set = m.group(1)
         if shards:
             parts.append((d, point_set, next(iter(shards))))
-    check_partition(parts)
-    return totals, seconds, complete, kinds
+    coverage = check_partition(parts)
+    return totals, seconds, complete, kinds, coverage
 
 
 def main(dirs):
     try:
-        totals, seconds, complete, kinds = collect(dirs)
+        totals, seconds, complete, kinds, coverage = collect(dirs)
     except Mixed as e:
         sys.stderr.write("summarize_certified_loops.py: %s\n" % e)
         return 2
@@ -160,6 +170,8 @@ def main(dirs):
           f"{sum(seconds[r] for r in done):,} s")
     if "per-start" in kinds:
         print("a fixed priority per start (--order-seeds per-start)")
+    for line in coverage:
+        print(line)
     missing = [r for r in totals if complete[r] != len(dirs)]
     if missing:
         print("not complete in every directory: " + ", ".join(missing))
