@@ -7,7 +7,8 @@
 # on CGAL's triangulation or stuck) or were still going at the trace limit with
 # no state repeated, those stuck, and the seconds the reading took. The
 # directories may be of different point sets (one per set of a family) or
-# shards (--shard I/N) of one: a reading's counts are summed over them.
+# shards (--shard I/N) of one: a reading's counts are summed over them, and a
+# line below the table says which shards of how many it added up.
 # Readings not complete in every directory are listed as missing. Exit 1 if a
 # run at the limit was neither certified a loop nor seen to end, so that no
 # such claim goes unnoticed. Directories run with a priority per start
