@@ -69,6 +69,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -244,8 +245,7 @@ int run(int argc, char** argv)
   const auto in_shard = [&](std::size_t t) { return (t / batch) % shards == shard; };
   // The shard's starts, held when there are at most hold_limit (one TOPCOM enumeration for every
   // reading and seed); else streamed from TOPCOM again for each reading and seed.
-  std::vector<std::size_t> held_numbers; // in TOPCOM's order
-  std::vector<std::vector<std::array<std::size_t, 4>>> held_starts;
+  std::vector<std::pair<std::size_t, std::vector<std::array<std::size_t, 4>>>> held; // (number, cells), in TOPCOM's order
   std::size_t enumerated = 0; // TOPCOM's triangulations, when the starts are held
   bool streamed = hold_limit == 0; // --hold 0: without enumerating first
   if(!streamed)
@@ -253,21 +253,20 @@ int run(int argc, char** argv)
     enumerated = ES::IO::for_each_topcom_triangulation(
       c.points, std::size_t(-1), [&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {
         if(!in_shard(t)) return true;
-        if(held_starts.size() == hold_limit)
+        if(held.size() == hold_limit)
         {
           streamed = true; // too many to hold
           return false;
         }
-        held_numbers.push_back(t);
-        held_starts.push_back(cells);
+        held.emplace_back(t, cells);
         return true;
       });
-    if(streamed) held_numbers = decltype(held_numbers)(), held_starts = decltype(held_starts)(); // memory back
+    if(streamed) held = decltype(held)(); // memory back
   }
   const auto for_each_start = [&](auto visit) {
     if(!streamed)
     {
-      for(std::size_t k = 0; k < held_starts.size(); ++k) visit(held_numbers[k], held_starts[k]);
+      for(const auto& [t, cells] : held) visit(t, cells);
       return;
     }
     ES::IO::for_each_topcom_triangulation(c.points, std::size_t(-1),

@@ -80,7 +80,7 @@ def check_partition(parts):
             seen[shard[0]] = d
     coverage = []
     for point_set, runs in by_set.items():
-        index, count, batch = runs[0][1]
+        _, count, batch = runs[0][1]
         if count is not None:
             coverage.append("%s: %d of %d shards (%s), %s" % (
                 point_set, len(runs), count, ", ".join(str(i) for i in sorted(r[1][0] for r in runs)),
