@@ -17,6 +17,7 @@
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -172,17 +173,84 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
   REQUIRE_THROWS_WITH(ES::run_conjecture_case(c), Catch::Contains("coplanar"));
 }
 
-TEST_CASE("TOPCOM's temporary files are removed when its input is refused", "[hostile]")
+// Runs `body` in a child process whose temporary folder is `tmp`; returns
+// its wait status. The child ends with _exit: no Catch2 state is torn down twice.
+template <class Body>
+int in_child_with_tmpdir(const std::string& tmp, Body body)
 {
-  // A point TOPCOM cannot take (not an integer) used to leave the input file behind.
-  const std::vector<Point> points = {Point(0.5, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
-  REQUIRE_THROWS(IO::topcom_triangulations(points, 10));
-  const std::string prefix = "edge_swapping_3_topcom_" + std::to_string(::getpid()) + "_";
-  for(const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+  fs::create_directories(tmp);
+  const pid_t child = ::fork();
+  if(child == 0)
   {
-    INFO(entry.path());
-    REQUIRE(entry.path().filename().string().rfind(prefix, 0) != 0);
+    ::setenv("TMPDIR", tmp.c_str(), 1);
+    int code = 3;
+    try
+    {
+      code = body();
+    }
+    catch(...)
+    {
+    }
+    ::_exit(code);
   }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
+std::vector<std::string> files_in(const std::string& dir)
+{
+  std::vector<std::string> names;
+  for(const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
+  return names;
+}
+
+TEST_CASE("TOPCOM's input file is not left behind when the input is refused or the process killed", "[hostile]")
+{
+  Workdir w;
+  const std::string tmp = w.path("tmp");
+  const std::vector<Point> cube = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0),
+                                   Point(0, 0, 1), Point(1, 0, 1), Point(0, 1, 1), Point(1, 1, 1)};
+  SECTION("a point TOPCOM cannot take (not an integer) is refused before any file is made")
+  {
+    const int status = in_child_with_tmpdir(tmp, [] {
+      const std::vector<Point> points = {Point(0.5, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+      try
+      {
+        IO::topcom_triangulations(points, 10);
+      }
+      catch(const std::invalid_argument&)
+      {
+        return 0;
+      }
+      return 1;
+    });
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+  }
+  SECTION("a process killed while TOPCOM runs leaves no file (it used to leave one)")
+  {
+    const int status = in_child_with_tmpdir(tmp, [&] {
+      IO::for_each_topcom_triangulation(cube, 1000, [](std::size_t, const std::vector<std::array<std::size_t, 4>>&) {
+        ::raise(SIGKILL);
+        return true;
+      });
+      return 1;
+    });
+    REQUIRE(WIFSIGNALED(status));
+    REQUIRE(WTERMSIG(status) == SIGKILL);
+  }
+  SECTION("a whole enumeration: the 74 fine triangulations of the cube")
+  {
+    const int status = in_child_with_tmpdir(tmp, [&] {
+      const auto result = IO::topcom_triangulations(cube, 1000);
+      return result.triangulations.size() == 74 && !result.truncated ? 0 : 1;
+    });
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 0);
+  }
+  INFO("left in the temporary folder: " << files_in(tmp).size());
+  REQUIRE(files_in(tmp).empty());
 }
 
 TEST_CASE("Defect 6: threads that cannot start are reported - not fatal", "[hostile]")

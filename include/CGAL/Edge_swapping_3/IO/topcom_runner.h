@@ -6,15 +6,15 @@
 #define CGAL_EDGE_SWAPPING_3_IO_TOPCOM_RUNNER_H
 
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <cerrno>
 #include <cstdio>
-#include <stdio.h>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <functional>
+#include <sstream>
 #include <stdexcept>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string>
-#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -46,7 +46,8 @@ inline std::string topcom_program()
 /// for each (`cells`: its tetrahedra, 0-based point indices), until
 /// `visit` returns false or `limit` have been visited. Returns the number
 /// visited. TOPCOM reads its input from a file of the temporary folder that
-/// is removed on every path out. Throws `std::invalid_argument` for points
+/// is unlinked as soon as it is written, so none is left even when the
+/// process is killed. Throws `std::invalid_argument` for points
 /// that TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails
 /// (also after some triangulations were visited: a list cut short is not
 /// taken for the whole), and what `visit` throws.
@@ -54,22 +55,32 @@ template <class Point, class Visit>
 std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std::size_t limit, Visit visit)
 {
   const std::string program = topcom_program();
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string input = (dir / ("edge_swapping_3_topcom_" + std::to_string(::getpid()) + "_" +
-                                    std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id())) + ".in"))
-                                .string();
-  struct Remove_on_exit
+  std::ostringstream text;
+  write_topcom_points(text, points); // throws before any file exists
+  const std::string input = text.str();
+  // The input file is unlinked as soon as it is made: TOPCOM reads it through
+  // /dev/fd, and a process killed by a signal leaves nothing in the temporary folder.
+  std::string name = (std::filesystem::temp_directory_path() / "edge_swapping_3_topcom_XXXXXX").string();
+  struct Descriptor
   {
-    const std::string& path;
-    ~Remove_on_exit() { std::remove(path.c_str()); }
-  } remove_on_exit{input};
+    int fd;
+    ~Descriptor()
+    {
+      if(fd >= 0) ::close(fd);
+    }
+  } input_file{::mkstemp(name.data())};
+  if(input_file.fd < 0) throw std::runtime_error("cannot create TOPCOM's input file '" + name + "'");
+  ::unlink(name.c_str());
+  for(std::size_t written = 0; written < input.size();)
   {
-    std::ofstream in(input);
-    write_topcom_points(in, points);
-    in.close();
-    if(!in) throw std::runtime_error("cannot write TOPCOM's input '" + input + "'");
+    const ssize_t n = ::write(input_file.fd, input.data() + written, input.size() - written);
+    if(n < 0 && errno == EINTR) continue;
+    if(n <= 0) throw std::runtime_error("cannot write TOPCOM's input file '" + name + "'");
+    written += std::size_t(n);
   }
-  const std::string command = program + " < '" + input + "' 2> /dev/null";
+  // Where /dev/fd duplicates the descriptor (not Linux, which opens the file anew), it reads from here.
+  ::lseek(input_file.fd, 0, SEEK_SET);
+  const std::string command = program + " < /dev/fd/" + std::to_string(input_file.fd) + " 2> /dev/null";
   // Closed on every path out; a TOPCOM still writing when we stop ends on SIGPIPE.
   struct Pipe
   {
