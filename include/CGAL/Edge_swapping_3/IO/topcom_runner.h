@@ -46,8 +46,8 @@ inline std::string topcom_program()
 /// for each (`cells`: its tetrahedra, 0-based point indices), until
 /// `visit` returns false or `limit` have been visited. Returns the number
 /// visited. TOPCOM reads its input from a file of the temporary folder that
-/// is unlinked as soon as it is written, so none is left even when the
-/// process is killed. Throws `std::invalid_argument` for points
+/// is unlinked as soon as it is made, so none is left when the process is
+/// killed while TOPCOM runs. Throws `std::invalid_argument` for points
 /// that TOPCOM cannot read exactly, `std::runtime_error` when TOPCOM fails
 /// (also after some triangulations were visited: a list cut short is not
 /// taken for the whole), and what `visit` throws.
@@ -58,8 +58,8 @@ std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std:
   std::ostringstream text;
   write_topcom_points(text, points); // throws before any file exists
   const std::string input = text.str();
-  // The input file is unlinked as soon as it is made: TOPCOM reads it through
-  // /dev/fd, and a process killed by a signal leaves nothing in the temporary folder.
+  // Unlinked as soon as it is made: TOPCOM reads it through /dev/fd, and a
+  // process killed by a signal while TOPCOM runs leaves nothing in the temporary folder.
   std::string name = (std::filesystem::temp_directory_path() / "edge_swapping_3_topcom_XXXXXX").string();
   struct Descriptor
   {
