@@ -173,6 +173,8 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
   REQUIRE_THROWS_WITH(ES::run_conjecture_case(c), Catch::Contains("coplanar"));
 }
 
+namespace {
+
 // Runs `body` in a child process whose temporary folder is `tmp`; returns
 // its wait status. The child ends with _exit: no Catch2 state is torn down twice.
 template <class Body>
@@ -204,6 +206,8 @@ std::vector<std::string> files_in(const std::string& dir)
   for(const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
   return names;
 }
+
+} // namespace
 
 TEST_CASE("TOPCOM's input file is not left behind when the input is refused or the process killed", "[hostile]")
 {
