@@ -60,6 +60,16 @@ std::set<std::string> keys(const std::vector<nlohmann::json>& lines)
   return k;
 }
 
+/// A flip visitor that counts the flips.
+struct Counting_visitor
+{
+  std::size_t* flips;
+  template <class T, class Plan>
+  void before_flip(const T&, const Plan&) const {}
+  template <class T, class Plan, class Cells>
+  void after_flip(const T&, const Plan&, const Cells&, int) const { ++*flips; }
+};
+
 } // namespace
 
 TEST_CASE("Joe's phenomenon: 9 points where plain swapping is stuck and the helper strategy gets out", "[conjectures]")
@@ -1129,6 +1139,93 @@ TEST_CASE("Loops of the helper strategy under a fixed face order, 8 and 6 points
   build_start(tr, cleared);
   REQUIRE_THROWS_WITH(CGAL::swap_edges_with_helper(tr, ES::parameters::helper_reading(cleared.reading)),
                       Catch::Contains("run on the paper's cycles"));
+}
+
+TEST_CASE("Fixed order: a state that comes back is added up to the limit, the report and the end those of every cycle run",
+          "[conjectures]")
+{
+  // Every TOPCOM start of the 8-point loop's set and of the cube's corners, the
+  // helper in seed 16's fixed order under each of the 36 readings, to limits
+  // that leave other remainders of a period: the driver that adds up the
+  // periods of a state that came back and the one that runs every cycle give
+  // the same cycle records (also as the cycle visitor sees them), ending and cells.
+  auto same_records = [](const std::vector<ES::Cycle_record>& a, const std::vector<ES::Cycle_record>& b) {
+    if(a.size() != b.size()) return false;
+    for(std::size_t k = 0; k < a.size(); ++k)
+      if(a[k].cycle != b[k].cycle || a[k].swaps != b[k].swaps || a[k].visits != b[k].visits ||
+         a[k].new_tags != b[k].new_tags || a[k].cells != b[k].cells ||
+         a[k].non_delaunay_facets != b[k].non_delaunay_facets)
+        return false;
+    return true;
+  };
+  const auto loop8 = load_case("helper_priority_loop_8_points.json");
+  std::size_t runs = 0, at_limit = 0, added_up = 0, cycles_added = 0;
+  for(const auto& points : {loop8.points, ES::make_point_family<Point>("cube-corners", 8, 1)})
+  {
+    const auto starts = ES::IO::topcom_triangulations(points, 1000);
+    REQUIRE_FALSE(starts.truncated);
+    for(std::size_t t = 0; t < starts.triangulations.size(); ++t)
+      for(const ES::Helper_reading& reading : ES::all_helper_readings())
+        for(const std::size_t limit : {std::size_t(61), std::size_t(200)})
+        {
+          INFO("start " << t << " of " << points.size() << " points, " << ES::helper_reading_name(reading)
+                        << ", limit " << limit);
+          // skip: the setting; flips: a flip visitor's count (it turns the adding up off)
+          auto run = [&](bool skip, std::size_t& skipped, std::vector<ES::Cycle_record>& seen,
+                         std::size_t* flips) {
+            Tr tr;
+            std::vector<Tr::Vertex_handle> vertices;
+            REQUIRE(ES::build_triangulation_from_cells(tr, points, ES::oriented_cells(points, starts.triangulations[t]),
+                                                       vertices)
+                      .empty());
+            ES::internal::Driver_settings s;
+            s.schedule = ES::PAPER_CYCLES;
+            s.face_order = ES::PRIORITY_ORDER;
+            s.random_seed = 16;
+            s.max_rounds = limit;
+            s.reading = reading;
+            s.skip_repeated_cycles = skip;
+            s.cycles_skipped = &skipped;
+            s.cycle_visitor = [&seen](const ES::Cycle_record& r) { seen.push_back(r); };
+            const auto report = ES::internal::with_domain_constraints(tr, CGAL::parameters::default_values(),
+                                                                      [&](const auto& constraints) {
+              return flips ? ES::internal::run_helper(tr, s, constraints, CGAL::parameters::visitor(Counting_visitor{flips}))
+                           : ES::internal::run_helper(tr, s, constraints, CGAL::parameters::default_values());
+            });
+            return std::make_pair(report, cell_set(tr));
+          };
+          std::size_t skipped = 0, not_skipped = 0, visited_skipped = 0, flips = 0;
+          std::vector<ES::Cycle_record> seen, seen_every, seen_visited;
+          const auto [fast, fast_cells] = run(true, skipped, seen, nullptr);
+          const auto [every, every_cells] = run(false, not_skipped, seen_every, nullptr);
+          const auto [visited, visited_cells] = run(true, visited_skipped, seen_visited, &flips);
+          ++runs;
+          REQUIRE(not_skipped == 0);
+          REQUIRE(visited_skipped == 0); // a flip visitor sees every flip
+          std::size_t swaps = 0;
+          for(std::size_t k : every.total_swaps()) swaps += k;
+          REQUIRE(flips == swaps);
+          REQUIRE(fast.ending == every.ending);
+          REQUIRE(fast.non_delaunay_facets == every.non_delaunay_facets);
+          REQUIRE(same_records(fast.cycles, every.cycles));
+          REQUIRE(same_records(seen, every.cycles));
+          REQUIRE(same_records(visited.cycles, every.cycles));
+          REQUIRE(fast_cells == every_cells);
+          REQUIRE(visited_cells == every_cells);
+          if(every.ending == ES::CYCLE_LIMIT_REACHED) ++at_limit;
+          if(skipped > 0)
+          {
+            REQUIRE(every.ending == ES::CYCLE_LIMIT_REACHED);
+            ++added_up;
+            cycles_added += skipped;
+          }
+        }
+  }
+  std::cout << "state come back: " << runs << " runs, " << at_limit << " at the limit, " << added_up
+            << " of them added up (" << cycles_added << " cycles not run)\n";
+  REQUIRE(runs == (131 + 74) * 36 * 2);
+  REQUIRE(at_limit > 0);
+  REQUIRE(added_up == at_limit);
 }
 
 TEST_CASE("Traces of degenerate point sets: 2-2 and 4-4 flips and planar configurations confirmed by the checker",

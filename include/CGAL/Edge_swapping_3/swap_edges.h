@@ -83,6 +83,7 @@ struct Criterion_rule
 struct Helper_rule
 {
   Helper_swap_condition condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS; // Helper_reading::swap_condition
+  static constexpr bool reads_only_cells_and_tags = true; // a fixed-order run that comes back to a state loops
 
   template <class Driver, class Cell_handle>
   void operator()(Driver& d, Cell_handle c, int i) const

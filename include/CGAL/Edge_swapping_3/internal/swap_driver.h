@@ -20,6 +20,7 @@
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
+#include <CGAL/Edge_swapping_3/Flip_visitor.h>
 #include <CGAL/Edge_swapping_3/Helper_reading.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/Visit_record.h>
@@ -55,7 +56,22 @@ struct Driver_settings
   Perturbation perturbation = CGAL_PERTURBATION;
   std::function<void(const Cycle_record&)> cycle_visitor;
   Helper_reading reading; // the helper's, on the paper's cycles
+  // Under the fixed face order on the paper's cycles, a state that comes back
+  // ends the work: its period is added up to the limit, not run (see
+  // `skip_repeated_cycles`). Only for a rule that reads nothing but the cells
+  // and the tags (`Rule::reads_only_cells_and_tags`), and with no flip or
+  // visit visitor, which would miss the flips not run.
+  bool skip_repeated_cycles = true;
+  std::size_t* cycles_skipped = nullptr; // if given, the cycles added up instead of run
 };
+
+/// Whether a rule declares that its decisions read only the cells and the
+/// driver's tags (then a state that comes back repeats the run).
+template <class Rule, class = void>
+struct Reads_only_cells_and_tags : std::false_type {};
+template <class Rule>
+struct Reads_only_cells_and_tags<Rule, std::void_t<decltype(Rule::reads_only_cells_and_tags)>>
+  : std::bool_constant<Rule::reads_only_cells_and_tags> {};
 
 /// A visitor given by value or through `std::ref`.
 template <class T>
@@ -296,6 +312,13 @@ public:
     CGAL_precondition(tr_.dimension() == 3);
     CGAL::Real_timer timer;
     timer.start();
+    constexpr bool plain_visitor =
+      std::is_same<std::decay_t<decltype(unwrap(std::declval<Visitor&>()))>, Default_flip_visitor>::value;
+    skip_repeats_ = settings_.skip_repeated_cycles && settings_.face_order == PRIORITY_ORDER &&
+                    Reads_only_cells_and_tags<Rule>::value && plain_visitor && !tracing;
+    kept_round_ = 0;
+    kept_for_ = 1;
+    candidate_round_ = 0;
     Swap_report report = (settings_.schedule == WORK_QUEUE)                         ? run_work_queue(visit)
                          : (settings_.reading.made_facets == MADE_FACETS_SAME_CYCLE) ? run_sweeps(visit)
                                                                                       : run_cycles(visit);
@@ -949,6 +972,7 @@ private:
         report.ending = CONVERGED;
         break;
       }
+      if(skip_repeats_) round = skip_repeated_cycles(report, round);
     }
     return report;
   }
@@ -1046,9 +1070,106 @@ private:
         report.ending = CONVERGED;
         break;
       }
+      if(skip_repeats_) round = skip_repeated_cycles(report, round);
     }
     sweeping_ = false;
     return report;
+  }
+
+  // ---- a state that comes back, under the fixed face order ----
+  //
+  // Under the fixed order a cycle is a function of the state it starts from:
+  // the cells by their vertices, their tags, and the tags the reading
+  // remembers by vertices (the order is one of vertex triples; a rule that
+  // says `reads_only_cells_and_tags` reads nothing else). When the state at
+  // the end of cycle i is that of cycle i - p, the run repeats its last p
+  // cycles until the limit: their records are added again for each whole
+  // period left, and the cycles left over are run, so that the report and the
+  // triangulation at the end are those of running every cycle. Brent's
+  // method finds p on hashes of the states (a sum over the cells): one
+  // cycle's hash is kept and compared with each later one's, and the kept one
+  // moves on after 1, 2, 4, ... cycles. A match is only likely: the state of
+  // that cycle is kept and compared, exactly, with the state p cycles on. So
+  // no state is held but on a likely loop (a mesh's cells, 20 bytes each).
+
+  struct Cycle_state
+  {
+    std::vector<std::array<std::uint32_t, 5>> cells; // vertex slots in increasing order, then the tag
+    std::size_t remembered = 0; // remembered tags: a set that only grows, so its size tells it
+    bool operator==(const Cycle_state& o) const { return remembered == o.remembered && cells == o.cells; }
+  };
+
+  std::array<std::uint32_t, 5> cell_state(Cell_handle c)
+  {
+    const Vertex_slot_quadruple q = vertex_slots(c);
+    return {q[0], q[1], q[2], q[3], std::uint32_t(is_tagged(c))};
+  }
+
+  std::uint64_t state_hash()
+  {
+    std::uint64_t h = mix_bits(remembered_tags_.size());
+    for(Cell_handle c : tr_.finite_cell_handles())
+    {
+      std::uint64_t g = 0;
+      for(std::uint32_t x : cell_state(c)) g = mix_bits(g ^ x);
+      h += g; // a sum: the cells in any order
+    }
+    return h;
+  }
+
+  Cycle_state cycle_state()
+  {
+    Cycle_state s;
+    s.remembered = remembered_tags_.size();
+    for(Cell_handle c : tr_.finite_cell_handles()) s.cells.push_back(cell_state(c));
+    std::sort(s.cells.begin(), s.cells.end());
+    return s;
+  }
+
+  /// After cycle `round`, which did not end the run: the cycle the run is at,
+  /// `round` or later if the state came back (the cycles between added up).
+  std::size_t skip_repeated_cycles(Swap_report& report, std::size_t round)
+  {
+    const std::uint64_t h = state_hash();
+    if(candidate_round_ > 0 && round == candidate_round_ + candidate_period_)
+    {
+      if(h == candidate_hash_ && cycle_state() == candidate_state_)
+        return add_periods(report, round, candidate_period_);
+      candidate_round_ = 0; // two states with one hash
+      candidate_state_ = Cycle_state();
+    }
+    if(candidate_round_ == 0 && kept_round_ > 0 && h == kept_hash_)
+    {
+      candidate_state_ = cycle_state();
+      candidate_hash_ = h;
+      candidate_round_ = round;
+      candidate_period_ = round - kept_round_;
+    }
+    if(round - kept_round_ == kept_for_)
+    {
+      kept_hash_ = h;
+      kept_round_ = round;
+      kept_for_ *= 2;
+    }
+    return round;
+  }
+
+  /// The state at the end of cycle `round` is that of `period` cycles before:
+  /// the whole periods left are added up; returns the cycle they end on.
+  std::size_t add_periods(Swap_report& report, std::size_t round, std::size_t period)
+  {
+    const std::size_t added = (settings_.max_rounds - round) / period * period;
+    for(std::size_t k = 1; k <= added; ++k)
+    {
+      Cycle_record r = report.cycles[report.cycles.size() - period]; // a copy: the vector grows
+      r.cycle = round + k;
+      report.cycles.push_back(r);
+      if(settings_.cycle_visitor) settings_.cycle_visitor(r);
+    }
+    if(settings_.cycles_skipped != nullptr) *settings_.cycles_skipped += added;
+    skip_repeats_ = false; // fewer cycles than a period are left
+    candidate_state_ = Cycle_state();
+    return round + added;
   }
 
   template <class Rule>
@@ -1236,6 +1357,17 @@ private:
   int current_index_ = 0;
   VisitVisitor* visit_visitor_ = nullptr;
   Visit_record<Tr>* trace_ = nullptr; // the record of the visit under way (tracing only)
+  // skip_repeated_cycles: on in this run; the hash kept, its cycle (0: none) and
+  // the cycles until it moves on; a likely loop: the state, hash and cycle (0:
+  // none) to find again, and the period after which to look.
+  bool skip_repeats_ = false;
+  std::uint64_t kept_hash_ = 0;
+  std::size_t kept_round_ = 0;
+  std::size_t kept_for_ = 1;
+  Cycle_state candidate_state_;
+  std::uint64_t candidate_hash_ = 0;
+  std::size_t candidate_round_ = 0;
+  std::size_t candidate_period_ = 0;
 };
 
 } // namespace internal
