@@ -4,10 +4,17 @@
 // Delaunay on the same points, in one run. Each contender runs in a child
 // process of its own, so that its peak memory is its own.
 //
-//   benchmark_helper_vs_cgal [--max-cycles C] [--stall-dir DIR] [--no-pure-helper] [--seed S] [N ...]
+//   benchmark_helper_vs_cgal [--max-cycles C] [--stall-dir DIR] [--no-pure-helper] [--seed S]
+//                            [--fixed-order-cycles F] [N ...]
 //                            (default: 1000 cycles; seed 1; 100000 1000000)
 //
 // --seed S takes the points (for every contender) from CGAL::Random(S).
+//
+// --fixed-order-cycles F adds two lines per size: the helper on the paper's
+// cycles in a fixed face order (PRIORITY_ORDER, seed S) for F cycles, with
+// the driver's check for a state that comes back (on by default there) and
+// without it: the price of the check's per-cycle state hash on a large mesh.
+// The two are run in turn, three times each; the median of each is printed.
 //
 // --no-pure-helper leaves out the pure helper run (the longest: past 2,000 s
 // at 10^6 points), keeping CGAL, TetGen and the repair.
@@ -31,6 +38,8 @@
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include "benchmark_common.h"
+#include <algorithm>
+#include <array>
 #include <iostream>
 #include <map>
 #include <set>
@@ -102,6 +111,39 @@ struct Cell_set_hash
   }
 };
 
+// The helper on the paper's cycles in the fixed order from a placing start;
+// out: seconds, cycles, swaps, non-Delaunay facets left, cycles added up.
+void fixed_order_helper(std::size_t n, int seed, std::size_t cycles, bool check_repeats, double* out)
+{
+  const auto points = random_points(n, seed);
+  Triangulation tr;
+  ES::insert_by_placing(tr, points);
+  ES::internal::Driver_settings s;
+  s.schedule = ES::PAPER_CYCLES;
+  s.face_order = ES::PRIORITY_ORDER;
+  s.random_seed = unsigned(seed);
+  s.max_rounds = cycles;
+  s.skip_repeated_cycles = check_repeats;
+  std::size_t skipped = 0;
+  s.cycles_skipped = &skipped;
+  const ES::Swap_report report = ES::internal::with_domain_constraints(
+    tr, CGAL::parameters::default_values(), [&](const auto& constraints) {
+      return ES::internal::run_helper(tr, s, constraints, CGAL::parameters::default_values());
+    });
+  const auto w = report.total_swaps();
+  out[0] = report.seconds;
+  out[1] = double(report.number_of_cycles());
+  out[2] = double(w[0] + w[1] + w[2] + w[3]);
+  out[3] = double(report.non_delaunay_facets);
+  out[4] = double(skipped);
+}
+
+double median_of_three(std::array<double, 3> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[1];
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -112,12 +154,14 @@ int main(int argc, char** argv)
   std::string stall_dir;
   bool pure_helper = true;
   int seed = 1;
+  std::size_t fixed_order_cycles = 0;
   for(int a = 1; a < argc; ++a)
   {
     if(std::string(argv[a]) == "--max-cycles" && a + 1 < argc) max_cycles = std::stoul(argv[++a]);
     else if(std::string(argv[a]) == "--stall-dir" && a + 1 < argc) stall_dir = argv[++a];
     else if(std::string(argv[a]) == "--no-pure-helper") pure_helper = false;
     else if(std::string(argv[a]) == "--seed" && a + 1 < argc) seed = std::stoi(argv[++a]);
+    else if(std::string(argv[a]) == "--fixed-order-cycles" && a + 1 < argc) fixed_order_cycles = std::stoul(argv[++a]);
     else sizes.push_back(std::stoul(argv[a]));
   }
   if(sizes.empty()) sizes = {100000, 1000000};
@@ -203,6 +247,27 @@ int main(int argc, char** argv)
                 ES::delaunay_repair_path_name(ES::Delaunay_repair_path(int(repair.values[3]))), repair.values[4],
                 repair.values[5], repair.values[6], (repair.values[8] + repair.values[0]) / cgal.values[0],
                 repair.values[6] / cgal.peak_mib, repair.values[7] == 1 ? "yes" : "no");
+    if(fixed_order_cycles > 0)
+    {
+      std::array<std::array<double, 3>, 2> seconds;
+      std::array<Measure, 2> last;
+      for(int round = 0; round < 3; ++round)
+        for(int check = 1; check >= 0; --check)
+        {
+          last[check] = in_child([n, seed, fixed_order_cycles, check](double* out) {
+            fixed_order_helper(n, seed, fixed_order_cycles, check == 1, out);
+          });
+          seconds[check][round] = last[check].values[0];
+        }
+      for(int check = 1; check >= 0; --check)
+        std::printf("%9s   fixed order, paper's cycles, state check %s: %.2f s (median of %.2f %.2f %.2f), %.0f cycles, %.0f "
+                    "swaps, %.0f facets not Delaunay, %.0f cycles added up, %.0f MiB, per cycle / CGAL %.2f\n",
+                    "", check ? "on " : "off", median_of_three(seconds[check]), seconds[check][0], seconds[check][1],
+                    seconds[check][2], last[check].values[1], last[check].values[2], last[check].values[3],
+                    last[check].values[4], last[check].peak_mib,
+                    median_of_three(seconds[check]) / last[check].values[1] / cgal.values[0]);
+      std::printf("%9s   the check's price: on / off %.3f\n", "", median_of_three(seconds[1]) / median_of_three(seconds[0]));
+    }
     std::fflush(stdout);
   }
   return 0;
