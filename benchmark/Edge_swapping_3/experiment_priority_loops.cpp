@@ -47,14 +47,17 @@
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
-// A run still going after 16 cycles is traced for 4 cycles, then 16, 32, 64
-// and so on, until the checker certifies a loop or the run ends: the order is
-// fixed, so a loop certified early is the run's loop at any limit. The ladder
-// starts on 16 when that certified the reading's last loop. A run still going
-// at MAX_CYCLES is counted there, and traced on, up to the trace limit
-// (--trace-limit N; 8 MAX_CYCLES when N is 0 or not given), for a loop that closes later; one
-// that ends after MAX_CYCLES, or is still going at the trace limit with no
-// state repeated, is counted apart ("at the limit, not certified").
+// Each start runs untraced up to the trace limit (--trace-limit N; 8 MAX_CYCLES
+// when N is 0 or not given); the helper's driver finds a state that comes back
+// in the fixed order (Swap_report::loop_round) and adds its period up instead
+// of running it. A loop found so is traced to the cycle where it closed, and
+// the checker certifies it from the trace alone; any other run still going at
+// MAX_CYCLES is traced to the trace limit. The order is fixed, so a loop
+// certified early is the run's loop at any limit. A run still going at
+// MAX_CYCLES is counted there; one that ends after MAX_CYCLES, or is still
+// going at the trace limit with no state repeated, is counted apart ("at the
+// limit, not certified"). "loops certified by cycles traced" counts the loops
+// by the length of the trace that certified them, in bins (at most 4, 16, 32, ...).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -293,9 +296,10 @@ int run(int argc, char** argv)
   c.order = ES::PRIORITY_ORDER;
   c.start = ES::GIVEN_CELLS_START;
   const std::string save_dir = argc == 6 ? argv[5] : "";
-  const std::size_t early_cycles = 16;
-  std::vector<std::size_t> rungs; // of the trace ladder below: 4, 16, 32, 64, ..., the trace limit
-  for(std::size_t cycles = 4; cycles < trace_limit; cycles = cycles == 4 ? early_cycles : 2 * cycles)
+  // The lengths of the traces that certified loops are counted in these bins (printed as
+  // "loops certified by cycles traced"): at most 4, 16, 32, 64, ..., the trace limit.
+  std::vector<std::size_t> rungs;
+  for(std::size_t cycles = 4; cycles < trace_limit; cycles = cycles == 4 ? 16 : 2 * cycles)
     rungs.push_back(cycles);
   rungs.push_back(trace_limit);
   for(const ES::Helper_reading& reading : readings)
@@ -305,8 +309,11 @@ int run(int argc, char** argv)
     std::size_t all_limit = 0, all_stuck = 0, all_certified = 0, runs = 0;
     std::size_t ended_later = 0, stuck_later = 0, unsettled = 0; // of the runs at the limit
     bool saved = false;
-    std::size_t first_rung = 0; // of the ladder below
-    std::vector<std::size_t> certified_on(rungs.size()); // loops certified on each rung
+    std::vector<std::size_t> certified_on(rungs.size()); // loops certified by a trace of each bin
+    // Of the runs at the trace limit: loops the driver found, certified by the first trace (to
+    // the cycle whose hash came back) or the second (to the state found again exactly); the
+    // runs traced to the trace limit (no loop found, or neither trace certified one).
+    std::size_t driver_loops = 0, first_trace = 0, second_trace = 0, whole_traces = 0;
     std::size_t fewest_swaps = 0, fewest_seed = 0, fewest_start = 0, loops_seen = 0; // the loop with the fewest swaps
     for(unsigned seed = first_seed; seed <= last_seed; ++seed)
     {
@@ -318,42 +325,46 @@ int run(int argc, char** argv)
         if(++runs % 100000 == 0) // progress of a long run, on stderr
           std::cerr << "reading " << ES::helper_reading_name(c.reading) << ": " << runs << " runs; seed " << seed
                     << ": " << limit << " at the limit so far\n";
-        // A few cycles first; what ends in them ends the same at any larger limit.
-        c.max_cycles = std::min<std::size_t>(early_cycles, max_cycles);
+        // Untraced to the trace limit first: under the fixed order the driver finds a state that
+        // comes back and adds its period up to the limit (Swap_report::loop_round), so a loop
+        // costs a few of its periods here, and the trace below stops where it closes.
+        c.max_cycles = trace_limit;
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
-        if(o.equal_to_cgal) return;
+        if(o.ending != ES::CYCLE_LIMIT_REACHED && o.cycles <= max_cycles && o.equal_to_cgal) return;
         // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
         std::stringstream trace;
         trace_checker::Result r;
-        if(o.ending == ES::CYCLE_LIMIT_REACHED)
-        {
-          // Traced for 4 cycles, then 16, 32, 64 and so on, until a loop is certified or the run
-          // ends: a trace at most twice the length needed, and the failed ones shorter together.
-          // Past MAX_CYCLES (to the trace limit) only to certify a loop that closes later: the
-          // order is fixed, so the loop is the run's at any limit. The runs of a reading tend to
-          // close their loops alike, so the ladder starts on 16 when that certified the last loop.
-          for(std::size_t k = first_rung; k < rungs.size(); ++k)
-          {
-            c.max_cycles = rungs[k];
-            trace.str("");
-            trace.clear(); // a check read it to its end
-            o = ES::trace_conjecture_case(c, trace);
-            if(o.ending != ES::CYCLE_LIMIT_REACHED && o.cycles <= max_cycles && o.equal_to_cgal) return;
-            r = trace_checker::check_trace(trace);
-            if(!r.ok || o.ending != ES::CYCLE_LIMIT_REACHED) break; // refused, or ended (CGAL's or stuck)
-            if(r.ok && r.loop_certified)
-            {
-              ++certified_on[k];
-              first_rung = std::min<std::size_t>(k, 1);
-              break;
-            }
-          }
-        }
-        else
-        {
-          ES::trace_conjecture_case(c, trace);
+        std::size_t traced_cycles = 0;
+        auto trace_to = [&](std::size_t cycles) {
+          c.max_cycles = traced_cycles = cycles;
+          trace.str("");
+          trace.clear(); // a check read it to its end
+          o = ES::trace_conjecture_case(c, trace);
           r = trace_checker::check_trace(trace);
+        };
+        bool checked = false;
+        if(o.ending == ES::CYCLE_LIMIT_REACHED && o.loop_period > 0)
+        {
+          // The driver's loop: traced to the cycle whose state's hash was that of a cycle one
+          // period before (the checker's first repeated state is there or earlier, unless two
+          // states met by hash alone), else to where that state was found again exactly.
+          ++driver_loops;
+          const std::size_t hash_came_back = o.loop_round; // o is the traced run's below
+          for(std::size_t cycles : {hash_came_back, hash_came_back + o.loop_period})
+          {
+            trace_to(cycles);
+            checked = !r.ok || r.loop_certified;
+            if(checked) break;
+          }
+          if(r.ok && r.loop_certified) ++(traced_cycles == hash_came_back ? first_trace : second_trace);
         }
+        if(!checked) // the whole run: it ends, or no state came back by then
+        {
+          trace_to(trace_limit);
+          whole_traces += o.ending == ES::CYCLE_LIMIT_REACHED;
+        }
+        if(r.ok && r.loop_certified)
+          ++certified_on[std::lower_bound(rungs.begin(), rungs.end(), traced_cycles) - rungs.begin()];
         if(!r.ok)
         {
           std::cerr << "seed " << seed << ", triangulation " << t << ": the checker refuses the trace: " << r.error << '\n';
@@ -401,6 +412,9 @@ int run(int argc, char** argv)
     std::cout << "loops certified by cycles traced:";
     for(std::size_t k = 0; k < rungs.size(); ++k)
       std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
+    std::cout << "loops the driver found: " << driver_loops << ", certified traced to the cycle whose state's hash came back: "
+              << first_trace << ", to where the state came back exactly: " << second_trace
+              << "; runs at the trace limit traced whole: " << whole_traces << '\n';
     std::cout << "fewest swaps in a certified loop: ";
     if(loops_seen == 0) std::cout << "- (no loop)\n";
     else

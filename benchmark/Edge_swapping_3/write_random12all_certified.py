@@ -40,6 +40,7 @@ STOP_STARTS = [(46, "2026-12-03T00:00:00Z"), (47, "2026-12-03T04:40:00Z"), (48, 
 COUNTS = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
 FEWEST = re.compile(r"^fewest swaps in a certified loop: (\d+) ")
 LADDER = re.compile(r"^loops certified by cycles traced: (.*)$")
+DRIVER = re.compile(r"^loops the driver found: (\d+), ")  # since stop 51: one trace a loop
 PROGRESS = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, (\S+)$")
 
 
@@ -93,6 +94,7 @@ class Shard:
         self.ladder = collections.Counter()
         self.seconds, self.times = 0, []
         self.streamed = False
+        self.driver_traced = 0  # readings run with stop 51's traces (to where the driver found the loop)
         for name in os.listdir(path):
             if not name.endswith(".txt") or name == "progress.txt":
                 continue
@@ -103,6 +105,7 @@ class Shard:
             fewest = [int(m.group(1)) for m in map(FEWEST.match, lines) if m]
             self.readings[name[:-4]] = tuple(int(g) for g in counts[-1].groups()) + (min(fewest) if fewest else None,)
             self.streamed = self.streamed or "triangulations streamed" in lines[0]
+            self.driver_traced += any(DRIVER.match(line) for line in lines)
             for m in map(LADDER.match, lines):
                 if m:
                     for item in m.group(1).split(", "):
@@ -119,6 +122,15 @@ class Shard:
         self.limit = sum(r[1] for r in self.readings.values())
         self.certified = sum(r[2] for r in self.readings.values())
         self.stops = sorted({stop_of(t) for t in self.times})
+
+
+    def pipeline(self):
+        """The stop whose pipeline ran the shard: 46 streamed, 47 held, 51 one trace a loop."""
+        if self.streamed:
+            return "stop 46"
+        if self.driver_traced == 0:
+            return "stop 47"
+        return "stop 51" if self.driver_traced == len(self.readings) else "stops 47 and 51"
 
 
 def load_shards():
@@ -205,7 +217,10 @@ rows of `conjectures.md` are written from them by
 2 ran with `--hold 0` (stop 46), one process and one TOPCOM enumeration a reading; since stop 47
 the shard's starts are held and the 36 readings run in one process on one enumeration (the
 files are the same but for the first line, which gives the number of triangulations where it
-said "streamed").
+said "streamed"). Since stop 51 each loop is traced once, to where the helper's driver found
+its state come back, not on a ladder of longer and longer traces (the same counts, in about
+half the time; a reading's file says how its loops were traced in a line of its own, and the
+pipeline column says which shards ran so).
 """)
     out.append("**Shards %s (%s starts: shard I is the blocks of 4096 numbered I modulo 64):**\n"
                "under each of the 36 readings, in each shard, the runs at the limit are the stream's in\n"
@@ -221,11 +236,14 @@ said "streamed").
     out.append("| shard | fixed-order runs at the limit (36 readings) | certified loops | seconds | pipeline | run at stop |")
     out.append("|---:|---:|---:|---:|---|---|")
     for s in shards:
-        out.append("| %d | %s | %s | %s | stop %d | %s |" % (s.index, format(s.limit, ","), format(s.certified, ","),
-                                                           format(s.seconds, ","), 46 if s.streamed else 47,
+        out.append("| %d | %s | %s | %s | %s | %s |" % (s.index, format(s.limit, ","), format(s.certified, ","),
+                                                           format(s.seconds, ","), s.pipeline(),
                                                            stops_text(s.stops)))
     out.append("")
-    out.append("The traces that certified the loops: %s." % and_list(
+    out.append("The traces that certified the loops, by length: %s. Up to stop 50 a run at the limit was "
+               "traced on a ladder of 4, 16, 32, 64, ... cycles until a trace certified its loop; since stop 51 "
+               "it is traced once, to where the driver found its state come back, and counted at the first of "
+               "those lengths that is not shorter (`conjectures.md`, \"How the program keeps this cheap\")." % and_list(
         ["%d cycles for %s" % (c, format(n, ",")) for c, n in sorted(ladder.items()) if n]))
     out.append("The fewest swaps in a loop over the shards: %s. Per reading, with the fewest in each shard "
                "(a reading with few loops in a shard can have only long ones there; %d readings differ "

@@ -1151,6 +1151,9 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
   // cycle visitor sees them), ending and cells. The periods found here are 1
   // and 2, found at odd cycles: limit 200 leaves a cycle to run after the
   // whole periods (a driver that skipped it fails there, checked), 61 none.
+  // The report's loop_round and loop_period say where the state came back: at
+  // limit 61, traced to there, each is a loop the independent checker certifies
+  // (experiment_priority_loops traces its loops so).
   auto same_records = [](const std::vector<ES::Cycle_record>& a, const std::vector<ES::Cycle_record>& b) {
     if(a.size() != b.size()) return false;
     for(std::size_t k = 0; k < a.size(); ++k)
@@ -1161,7 +1164,7 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
     return true;
   };
   const auto loop8 = load_case("helper_priority_loop_8_points.json");
-  std::size_t runs = 0, at_limit = 0, added_up = 0, cycles_added = 0;
+  std::size_t runs = 0, at_limit = 0, added_up = 0, cycles_added = 0, traced_loops = 0;
   for(const auto& points : {loop8.points, ES::make_point_family<Point>("cube-corners", 8, 1)})
   {
     const auto starts = ES::IO::topcom_triangulations(points, 1000);
@@ -1215,19 +1218,51 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
           REQUIRE(fast_cells == every_cells);
           REQUIRE(visited_cells == every_cells);
           if(every.ending == ES::CYCLE_LIMIT_REACHED) ++at_limit;
+          REQUIRE(every.loop_period == 0); // not looked for: every cycle ran
+          REQUIRE(visited.loop_period == 0);
+          REQUIRE((skipped > 0) == (fast.loop_period > 0));
           if(skipped > 0)
           {
             REQUIRE(every.ending == ES::CYCLE_LIMIT_REACHED);
             ++added_up;
             cycles_added += skipped;
+            // Where the report says the state came back, the laboratory's run says the same, and a
+            // trace to there is a loop the independent checker certifies, of a period dividing it.
+            REQUIRE(fast.loop_round >= fast.loop_period);
+            REQUIRE(fast.loop_round + fast.loop_period <= limit);
+            if(limit == 61)
+            {
+              ES::Conjecture_case<Point> c;
+              c.points = points;
+              c.start = ES::GIVEN_CELLS_START;
+              c.cells = ES::oriented_cells(points, starts.triangulations[t]);
+              c.order = ES::PRIORITY_ORDER;
+              c.seed = 16;
+              c.reading = reading;
+              c.max_cycles = limit;
+              const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
+              REQUIRE(o.loop_round == fast.loop_round);
+              REQUIRE(o.loop_period == fast.loop_period);
+              c.max_cycles = fast.loop_round + fast.loop_period;
+              std::stringstream trace;
+              REQUIRE(ES::trace_conjecture_case(c, trace).loop_period == 0); // a trace runs every cycle
+              const trace_checker::Result checked = trace_checker::check_trace(trace);
+              REQUIRE(checked.ok);
+              REQUIRE(checked.loop_certified);
+              REQUIRE(checked.loop_to <= fast.loop_round + fast.loop_period);
+              REQUIRE(fast.loop_period % (checked.loop_to - checked.loop_from) == 0);
+              ++traced_loops;
+            }
           }
         }
   }
   std::cout << "state come back: " << runs << " runs, " << at_limit << " at the limit, " << added_up
-            << " of them added up (" << cycles_added << " cycles not run)\n";
+            << " of them added up (" << cycles_added << " cycles not run), " << traced_loops
+            << " traced to where the state came back and certified\n";
   REQUIRE(runs == (131 + 74) * 36 * 2);
   REQUIRE(at_limit > 0);
   REQUIRE(added_up == at_limit);
+  REQUIRE(traced_loops > 0);
 }
 
 TEST_CASE("Traces of degenerate point sets: 2-2 and 4-4 flips and planar configurations confirmed by the checker",

@@ -100,6 +100,13 @@ struct Swap_report
   std::size_t helper_rounds = 0;
   std::size_t first_helper_round = 0;    ///< Delaunay repair: the number of the helper's first round (0: none)
   std::size_t rebuilt_cells = 0;         ///< Delaunay repair: the finite cells the rebuild replaced (0 if not needed)
+  /// Helper in the fixed face order (`PRIORITY_ORDER`): the state (cells and tags) after
+  /// round `loop_round` was found again, compared exactly, `loop_period` rounds later, so
+  /// the run loops and the rounds after were added up, not run. 0 if no state came back
+  /// (or the driver did not look: a visitor, another order). Its hash, checked only by
+  /// hash, was also that of round `loop_round - loop_period`.
+  std::size_t loop_round = 0;
+  std::size_t loop_period = 0; ///< see `loop_round`
 
   /// The number of rounds.
   std::size_t number_of_cycles() const { return cycles.size(); }

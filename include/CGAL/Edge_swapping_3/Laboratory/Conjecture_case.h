@@ -81,6 +81,10 @@ struct Conjecture_outcome
   bool valid = false;               ///< the end passes `is_valid()`
   long long non_delaunay_facets = -1; ///< at the end (-1: not counted)
   std::size_t insertions_not_converged = 0; ///< insertion: insertions whose swaps did not converge
+  /// Helper in the fixed order, untraced: the run loops, its state after cycle `loop_round`
+  /// found again `loop_period` cycles later (`Swap_report::loop_round`); 0: not found.
+  std::size_t loop_round = 0;
+  std::size_t loop_period = 0; ///< see `loop_round`
   double seconds = 0;               ///< the run's time
 };
 
@@ -278,6 +282,8 @@ Conjecture_outcome run_conjecture_case(const Conjecture_case<Point>& c, Visit_tr
     add_swap_report(o, r);
     o.ending = r.ending;
     o.non_delaunay_facets = r.non_delaunay_facets;
+    o.loop_round = r.loop_round;
+    o.loop_period = r.loop_period;
   }
   o.valid = tr.is_valid();
   o.equal_to_cgal = o.valid && compare_with_delaunay(tr).identical;

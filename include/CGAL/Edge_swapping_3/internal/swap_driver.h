@@ -1167,6 +1167,8 @@ private:
       if(settings_.cycle_visitor) settings_.cycle_visitor(r);
     }
     if(settings_.cycles_skipped != nullptr) *settings_.cycles_skipped += added;
+    report.loop_round = round - period;
+    report.loop_period = period;
     skip_repeats_ = false; // fewer cycles than a period are left
     candidate_state_ = Cycle_state();
     return round + added;
