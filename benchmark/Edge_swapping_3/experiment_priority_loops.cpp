@@ -325,12 +325,18 @@ int run(int argc, char** argv)
         if(++runs % 100000 == 0) // progress of a long run, on stderr
           std::cerr << "reading " << ES::helper_reading_name(c.reading) << ": " << runs << " runs; seed " << seed
                     << ": " << limit << " at the limit so far\n";
-        // Untraced to the trace limit first: under the fixed order the driver finds a state that
-        // comes back and adds its period up to the limit (Swap_report::loop_round), so a loop
-        // costs a few of its periods here, and the trace below stops where it closes.
-        c.max_cycles = trace_limit;
+        // Untraced first: under the fixed order the driver finds a state that comes back and adds
+        // its period up to the limit (Swap_report::loop_round), so a loop costs a few of its
+        // periods here, and the trace below stops where it closes. A run on CGAL's triangulation
+        // at MAX_CYCLES is not counted, ended or not (as in edge_swap experiment).
+        c.max_cycles = max_cycles;
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
-        if(o.ending != ES::CYCLE_LIMIT_REACHED && o.cycles <= max_cycles && o.equal_to_cgal) return;
+        if(o.equal_to_cgal) return;
+        if(o.ending == ES::CYCLE_LIMIT_REACHED && o.loop_period == 0 && trace_limit > max_cycles)
+        {
+          c.max_cycles = trace_limit; // a loop that closes later, or a run that ends later
+          o = ES::run_conjecture_case(c);
+        }
         // Every run that did not end on CGAL's triangulation, traced and replayed by the independent checker.
         std::stringstream trace;
         trace_checker::Result r;
