@@ -310,10 +310,10 @@ int run(int argc, char** argv)
     std::size_t ended_later = 0, stuck_later = 0, unsettled = 0; // of the runs at the limit
     bool saved = false;
     std::vector<std::size_t> certified_on(rungs.size()); // loops certified by a trace of each bin
-    // Of the runs at the trace limit: loops the driver found, certified by the first trace (to
-    // the cycle whose hash came back) or the second (to the state found again exactly); the
-    // runs traced to the trace limit (no loop found, or neither trace certified one).
-    std::size_t driver_loops = 0, first_trace = 0, second_trace = 0, whole_traces = 0;
+    // Of the runs at the trace limit: loops the driver found, those certified by the trace to
+    // where the driver said the state first came back; the runs traced to the trace limit (no
+    // loop found, or that trace certified none).
+    std::size_t driver_loops = 0, first_trace = 0, whole_traces = 0;
     std::size_t fewest_swaps = 0, fewest_seed = 0, fewest_start = 0, loops_seen = 0; // the loop with the fewest swaps
     for(unsigned seed = first_seed; seed <= last_seed; ++seed)
     {
@@ -326,8 +326,8 @@ int run(int argc, char** argv)
           std::cerr << "reading " << ES::helper_reading_name(c.reading) << ": " << runs << " runs; seed " << seed
                     << ": " << limit << " at the limit so far\n";
         // Untraced first: under the fixed order the driver finds a state that comes back and adds
-        // its period up to the limit (Swap_report::loop_round), so a loop costs a few of its
-        // periods here, and the trace below stops where it closes. A run on CGAL's triangulation
+        // its period up to the limit, so a loop costs a few of its periods here; it says where
+        // the state first came back (Swap_report::loop_round), and the trace below stops there. A run on CGAL's triangulation
         // at MAX_CYCLES is not counted, ended or not (as in edge_swap experiment).
         c.max_cycles = max_cycles;
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
@@ -351,18 +351,12 @@ int run(int argc, char** argv)
         bool checked = false;
         if(o.ending == ES::CYCLE_LIMIT_REACHED && o.loop_period > 0)
         {
-          // The driver's loop: traced to the cycle whose state's hash was that of a cycle one
-          // period before (the checker's first repeated state is there or earlier, unless two
-          // states met by hash alone), else to where that state was found again exactly.
+          // The driver's loop: traced to the cycle where its state first came back, where the
+          // checker finds the state repeated, unless the driver placed it by hashes equal by chance.
           ++driver_loops;
-          const std::size_t hash_came_back = o.loop_round; // o is the traced run's below
-          for(std::size_t cycles : {hash_came_back, hash_came_back + o.loop_period})
-          {
-            trace_to(cycles);
-            checked = !r.ok || r.loop_certified;
-            if(checked) break;
-          }
-          if(r.ok && r.loop_certified) ++(traced_cycles == hash_came_back ? first_trace : second_trace);
+          trace_to(o.loop_round);
+          checked = !r.ok || r.loop_certified;
+          first_trace += r.ok && r.loop_certified;
         }
         if(!checked) // the whole run: it ends, or no state came back by then
         {
@@ -418,9 +412,8 @@ int run(int argc, char** argv)
     std::cout << "loops certified by cycles traced:";
     for(std::size_t k = 0; k < rungs.size(); ++k)
       std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
-    std::cout << "loops the driver found: " << driver_loops << ", certified traced to the cycle whose state's hash came back: "
-              << first_trace << ", to where the state came back exactly: " << second_trace
-              << "; runs at the trace limit traced whole: " << whole_traces << '\n';
+    std::cout << "loops the driver found: " << driver_loops << ", certified traced to where it said the state came back: "
+              << first_trace << "; runs at the trace limit traced whole: " << whole_traces << '\n';
     std::cout << "fewest swaps in a certified loop: ";
     if(loops_seen == 0) std::cout << "- (no loop)\n";
     else

@@ -1151,9 +1151,10 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
   // cycle visitor sees them), ending and cells. The periods found here are 1
   // and 2, found at odd cycles: limit 200 leaves a cycle to run after the
   // whole periods (a driver that skipped it fails there, checked), 61 none.
-  // The report's loop_round and loop_period say where the state came back: at
-  // limit 61, traced to there, each is a loop the independent checker certifies
-  // (experiment_priority_loops traces its loops so).
+  // The report's loop_round and loop_period say where the state first came back:
+  // at limit 61, traced to there, each is a loop the independent checker
+  // certifies, closing at that cycle with that period (experiment_priority_loops
+  // traces its loops so).
   auto same_records = [](const std::vector<ES::Cycle_record>& a, const std::vector<ES::Cycle_record>& b) {
     if(a.size() != b.size()) return false;
     for(std::size_t k = 0; k < a.size(); ++k)
@@ -1226,10 +1227,10 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
             REQUIRE(every.ending == ES::CYCLE_LIMIT_REACHED);
             ++added_up;
             cycles_added += skipped;
-            // Where the report says the state came back, the laboratory's run says the same, and a
-            // trace to there is a loop the independent checker certifies, of a period dividing it.
-            REQUIRE(fast.loop_round >= fast.loop_period);
-            REQUIRE(fast.loop_round + fast.loop_period <= limit);
+            // Where the report says the state first came back, the laboratory's run says the same,
+            // and a trace to there is a loop the independent checker certifies, closing there.
+            REQUIRE(fast.loop_round > fast.loop_period);
+            REQUIRE(fast.loop_round <= limit);
             if(limit == 61)
             {
               ES::Conjecture_case<Point> c;
@@ -1243,14 +1244,14 @@ TEST_CASE("Fixed order: a state that comes back is added up to the limit, the re
               const ES::Conjecture_outcome o = ES::run_conjecture_case(c);
               REQUIRE(o.loop_round == fast.loop_round);
               REQUIRE(o.loop_period == fast.loop_period);
-              c.max_cycles = fast.loop_round + fast.loop_period;
+              c.max_cycles = fast.loop_round;
               std::stringstream trace;
               REQUIRE(ES::trace_conjecture_case(c, trace).loop_period == 0); // a trace runs every cycle
               const trace_checker::Result checked = trace_checker::check_trace(trace);
               REQUIRE(checked.ok);
               REQUIRE(checked.loop_certified);
-              REQUIRE(checked.loop_to <= fast.loop_round + fast.loop_period);
-              REQUIRE(fast.loop_period % (checked.loop_to - checked.loop_from) == 0);
+              REQUIRE(checked.loop_to == fast.loop_round);
+              REQUIRE(checked.loop_to - checked.loop_from == fast.loop_period);
               ++traced_loops;
             }
           }
@@ -1979,7 +1980,7 @@ TEST_CASE("Random sweeps (same-cycle): nearby seeds draw their own sweeps, and t
   REQUIRE(r.end == "stuck");
 }
 
-TEST_CASE("edge_swap replay --trace writes the trace the checker confirms, and insertion cases are refused",
+TEST_CASE("edge_swap replay --trace writes the trace the checker confirms; untraced it says where a loop's state came back; insertion cases are refused",
           "[conjectures][traces][program]")
 {
   test::Workdir w;
@@ -1989,6 +1990,20 @@ TEST_CASE("edge_swap replay --trace writes the trace the checker confirms, and i
   REQUIRE(r.exit_code == 0);
   REQUIRE(w.slurp(w.path("t.jsonl")) ==
           w.slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.trace.jsonl"));
+  REQUIRE_FALSE(nlohmann::json::parse(r.out).contains("loop")); // a trace runs every cycle
+  // Untraced, the driver finds the state that came back and says where it first did: where
+  // the checker's loop, certified from the fixture's trace, closes, with its period.
+  const Run untraced = w.run("replay " + fixture + " --max-cycles 200");
+  REQUIRE(untraced.exit_code == 0);
+  const auto outcome = nlohmann::json::parse(untraced.out);
+  REQUIRE(outcome["ending"] == "cycle limit reached");
+  REQUIRE(outcome.contains("loop"));
+  const std::size_t round = outcome["loop"]["round"], period = outcome["loop"]["period"];
+  std::ifstream fixture_trace(std::string(EDGE_SWAPPING_3_FIXTURES) + "/helper_priority_loop_8_points.trace.jsonl");
+  const trace_checker::Result checked = trace_checker::check_trace(fixture_trace);
+  REQUIRE(checked.loop_certified);
+  REQUIRE(round == checked.loop_to);
+  REQUIRE(period == checked.loop_to - checked.loop_from);
   auto insertion = nlohmann::json::parse(w.slurp(fixture));
   insertion["strategy"] = "insertion";
   insertion["start"] = "-";

@@ -46,7 +46,11 @@ inline int run_replay(const std::string& path, std::size_t max_cycles, const std
   }
   // Cells that do not form a triangulation are bad input, not an outcome.
   if(o.bad_start) throw Usage_error(path + ": bad case file: " + o.start_problem);
-  std::cout << IO::conjecture_outcome_json(o).dump() << '\n';
+  nlohmann::json j = IO::conjecture_outcome_json(o);
+  // The helper in the fixed order: the driver found a state that came back, so the run loops
+  // (a trace runs every cycle and does not look).
+  if(o.loop_period > 0) j["loop"] = {{"round", o.loop_round}, {"period", o.loop_period}};
+  std::cout << j.dump() << '\n';
   return 0;
 }
 

@@ -100,11 +100,12 @@ struct Swap_report
   std::size_t helper_rounds = 0;
   std::size_t first_helper_round = 0;    ///< Delaunay repair: the number of the helper's first round (0: none)
   std::size_t rebuilt_cells = 0;         ///< Delaunay repair: the finite cells the rebuild replaced (0 if not needed)
-  /// Helper in the fixed face order (`PRIORITY_ORDER`): the state (cells and tags) after
-  /// round `loop_round` was found again, compared exactly, `loop_period` rounds later, so
-  /// the run loops and the rounds after were added up, not run. 0 if no state came back
-  /// (or the driver did not look: a visitor, another order). Its hash, checked only by
-  /// hash, was also that of round `loop_round - loop_period`.
+  /// Helper in the fixed face order (`PRIORITY_ORDER`), when the driver found a state
+  /// (cells and tags) come back, compared exactly, so that the run loops and the rounds
+  /// after were added up, not run: the first round whose state is that of `loop_period`
+  /// rounds before, and the loop's period, both placed by a 64-bit hash of each round's
+  /// state (states equal by chance would misplace them, not make a loop). 0 if no state
+  /// came back (or the driver did not look: a visitor, another order).
   std::size_t loop_round = 0;
   std::size_t loop_period = 0; ///< see `loop_round`
 

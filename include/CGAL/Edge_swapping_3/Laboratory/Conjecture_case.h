@@ -81,8 +81,9 @@ struct Conjecture_outcome
   bool valid = false;               ///< the end passes `is_valid()`
   long long non_delaunay_facets = -1; ///< at the end (-1: not counted)
   std::size_t insertions_not_converged = 0; ///< insertion: insertions whose swaps did not converge
-  /// Helper in the fixed order, untraced: the run loops, its state after cycle `loop_round`
-  /// found again `loop_period` cycles later (`Swap_report::loop_round`); 0: not found.
+  /// Helper in the fixed order, untraced: the run loops, and its state after cycle
+  /// `loop_round` is first that of `loop_period` cycles before (`Swap_report::loop_round`);
+  /// 0: no loop found.
   std::size_t loop_round = 0;
   std::size_t loop_period = 0; ///< see `loop_round`
   double seconds = 0;               ///< the run's time

@@ -319,6 +319,7 @@ public:
     kept_round_ = 0;
     kept_for_ = 1;
     candidate_round_ = 0;
+    round_hashes_.clear();
     Swap_report report = (settings_.schedule == WORK_QUEUE)                         ? run_work_queue(visit)
                          : (settings_.reading.made_facets == MADE_FACETS_SAME_CYCLE) ? run_sweeps(visit)
                                                                                       : run_cycles(visit);
@@ -1131,6 +1132,7 @@ private:
   std::size_t skip_repeated_cycles(Swap_report& report, std::size_t round)
   {
     const std::uint64_t h = state_hash();
+    round_hashes_.push_back(h); // of round round_hashes_.size()
     if(candidate_round_ > 0 && round == candidate_round_ + candidate_period_)
     {
       if(h == candidate_hash_ && cycle_state() == candidate_state_)
@@ -1167,11 +1169,26 @@ private:
       if(settings_.cycle_visitor) settings_.cycle_visitor(r);
     }
     if(settings_.cycles_skipped != nullptr) *settings_.cycles_skipped += added;
-    report.loop_round = round - period;
-    report.loop_period = period;
+    locate_loop(report, period);
     skip_repeats_ = false; // fewer cycles than a period are left
     candidate_state_ = Cycle_state();
     return round + added;
+  }
+
+  /// The run loops with a period dividing `period` (states compared exactly):
+  /// the report gets where it first came back, by the rounds' hashes (the
+  /// first round i whose hash is that of round i + `period`, then the
+  /// shortest period from there; hashes equal by chance would misplace it).
+  void locate_loop(Swap_report& report, std::size_t period)
+  {
+    const std::vector<std::uint64_t>& h = round_hashes_; // h[k]: after round k + 1
+    std::size_t i = 0;
+    while(h[i] != h[i + period]) ++i; // ends: the last round's hash is that of `period` before
+    std::size_t p = 1;
+    while(period % p != 0 || h[i] != h[i + p]) ++p;
+    report.loop_round = i + 1 + p;
+    report.loop_period = p;
+    round_hashes_ = {};
   }
 
   template <class Rule>
@@ -1370,6 +1387,7 @@ private:
   std::uint64_t candidate_hash_ = 0;
   std::size_t candidate_round_ = 0;
   std::size_t candidate_period_ = 0;
+  std::vector<std::uint64_t> round_hashes_; // the state's hash after each round, to place a loop
 };
 
 } // namespace internal
