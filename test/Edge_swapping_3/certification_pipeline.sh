@@ -88,10 +88,10 @@ table "$work/limit5_short" | grep -qF '| 2,620 | 216 | 161 | 0 | 55 | 0 |' || fa
 # and certified there; with a trace limit of 5, the 172 runs whose loop the driver had not
 # found by cycle 5 are traced whole (to 5), and 117 of them are loops all the same.
 driver_line() { grep -h '^loops the driver found: ' "$1"; }
-hash_first="certified traced to the cycle whose state's hash came back"
-[ "$(driver_line "$work/whole/${readings[0]}.txt")" = "loops the driver found: 174, $hash_first: 174, to where the state came back exactly: 0; runs at the trace limit traced whole: 0" ] ||
+first_return="certified traced to where it said the state came back"
+[ "$(driver_line "$work/whole/${readings[0]}.txt")" = "loops the driver found: 174, $first_return: 174; runs at the trace limit traced whole: 0" ] ||
   fail "the package's reading: 174 loops found by the driver and certified by one trace each"
-[ "$(driver_line "$work/limit5_short/${readings[0]}.txt")" = "loops the driver found: 44, $hash_first: 44, to where the state came back exactly: 0; runs at the trace limit traced whole: 172" ] ||
+[ "$(driver_line "$work/limit5_short/${readings[0]}.txt")" = "loops the driver found: 44, $first_return: 44; runs at the trace limit traced whole: 172" ] ||
   fail "trace limit 5: 44 loops found by the driver, 172 runs traced whole"
 status=0
 python3 "$summarize" "$work/limit5_short" > /dev/null || status=$?
