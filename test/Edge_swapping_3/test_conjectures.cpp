@@ -1980,7 +1980,7 @@ TEST_CASE("Random sweeps (same-cycle): nearby seeds draw their own sweeps, and t
   REQUIRE(r.end == "stuck");
 }
 
-TEST_CASE("edge_swap replay --trace writes the trace the checker confirms; untraced it says where a loop's state came back; insertion cases are refused",
+TEST_CASE("edge_swap replay --trace writes the trace the checker confirms and untraced says where a loop first came back and insertion cases are refused",
           "[conjectures][traces][program]")
 {
   test::Workdir w;
