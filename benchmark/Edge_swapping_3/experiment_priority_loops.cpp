@@ -47,17 +47,19 @@
 // Every run that does not end on CGAL's Delaunay triangulation is traced and
 // replayed by the independent checker (test/Edge_swapping_3/trace_checker.h),
 // which confirms each decision and certifies the loops: doc/Edge_swapping_3/traces.md.
-// Each start runs untraced up to the trace limit (--trace-limit N; 8 MAX_CYCLES
-// when N is 0 or not given); the helper's driver finds a state that comes back
-// in the fixed order (Swap_report::loop_round) and adds its period up instead
-// of running it. A loop found so is traced to the cycle where it closed, and
-// the checker certifies it from the trace alone; any other run still going at
-// MAX_CYCLES is traced to the trace limit. The order is fixed, so a loop
-// certified early is the run's loop at any limit. A run still going at
-// MAX_CYCLES is counted there; one that ends after MAX_CYCLES, or is still
-// going at the trace limit with no state repeated, is counted apart ("at the
-// limit, not certified"). "loops certified by cycles traced" counts the loops
-// by the length of the trace that certified them, in bins (at most 4, 16, 32, ...).
+// Each start runs untraced to MAX_CYCLES, and one still going there with no
+// loop found on to the trace limit (--trace-limit N; 8 MAX_CYCLES when N is 0
+// or not given). In the fixed order the helper's driver finds a state that
+// comes back, adds its period up instead of running it, and says where the
+// state first came back (Swap_report::loop_round). A loop found so is traced
+// to that cycle, and the checker certifies it from the trace alone; any other
+// run not on CGAL's triangulation at MAX_CYCLES is traced whole, to the trace
+// limit. The order is fixed, so a loop certified early is the run's loop at
+// any limit. A run still going at MAX_CYCLES is counted there; one that ends
+// after MAX_CYCLES, or is still going at the trace limit with no state
+// repeated, is counted apart ("at the limit, not certified"). "loops certified
+// by cycles traced" counts the loops by the length of the trace that certified
+// them, in bins (at most 4, 16, 32, ...).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
@@ -327,8 +329,9 @@ int run(int argc, char** argv)
                     << ": " << limit << " at the limit so far\n";
         // Untraced first: under the fixed order the driver finds a state that comes back and adds
         // its period up to the limit, so a loop costs a few of its periods here; it says where
-        // the state first came back (Swap_report::loop_round), and the trace below stops there. A run on CGAL's triangulation
-        // at MAX_CYCLES is not counted, ended or not (as in edge_swap experiment).
+        // the state first came back (Swap_report::loop_round), and the trace below stops there.
+        // A run on CGAL's triangulation at MAX_CYCLES is not counted, ended or not (as in
+        // edge_swap experiment).
         c.max_cycles = max_cycles;
         ES::Conjecture_outcome o = ES::run_conjecture_case(c);
         if(o.equal_to_cgal) return;
@@ -412,8 +415,9 @@ int run(int argc, char** argv)
     std::cout << "loops certified by cycles traced:";
     for(std::size_t k = 0; k < rungs.size(); ++k)
       std::cout << ' ' << rungs[k] << ": " << certified_on[k] << (k + 1 < rungs.size() ? "," : "\n");
-    std::cout << "loops the driver found: " << driver_loops << ", certified traced to where it said the state came back: "
-              << first_trace << "; runs at the trace limit traced whole: " << whole_traces << '\n';
+    std::cout << "loops the driver found: " << driver_loops
+              << ", certified traced to where it said the state came back: " << first_trace
+              << "; runs at the trace limit traced whole: " << whole_traces << '\n';
     std::cout << "fewest swaps in a certified loop: ";
     if(loops_seen == 0) std::cout << "- (no loop)\n";
     else
