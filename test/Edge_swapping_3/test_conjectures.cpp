@@ -16,6 +16,7 @@
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 #include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
 #include <CGAL/Edge_swapping_3/IO/topcom.h>
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include <filesystem>
 #include <fstream>
@@ -1382,6 +1383,75 @@ TEST_CASE("A certified loop of 2 swaps on 6 points under the fixed order for eac
   }
   REQUIRE(readings.size() == 36);
   REQUIRE(by_swaps == std::map<std::size_t, std::size_t>{{2, 36}});
+}
+
+TEST_CASE("edge_swap optimize --order priority --reading: each of the 36 loop fixtures loops from its .ele file - "
+          "placed where the state came back and traced byte for byte", "[conjectures][traces][program]")
+{
+  // A user meets the fixed order and the readings from the program too: the
+  // loop fixtures written as TetGen files, run by `optimize --helper`.
+  const std::string folder = std::string(EDGE_SWAPPING_3_FIXTURES) + "/loops";
+  Workdir w;
+  std::size_t loops = 0;
+  for(const auto& entry : std::filesystem::directory_iterator(folder))
+  {
+    const std::string path = entry.path().string();
+    if(entry.path().extension() != ".json") continue;
+    const auto c = ES::IO::read_conjecture_case_file<Point>(path);
+    INFO(path);
+    std::vector<std::array<double, 3>> points;
+    for(const Point& p : c.points) points.push_back({p.x(), p.y(), p.z()});
+    {
+      std::ofstream node(w.path("c.node")), ele(w.path("c.ele"));
+      ES::IO::write_node_file(node, points, {}, 1);
+      ES::IO::write_ele_file(ele, c.cells, 1);
+    }
+    const std::string reading = ES::helper_reading_name(c.reading);
+    const std::string args = "optimize " + w.path("c.ele") + " -o " + w.path("out.ele") +
+                             " --helper --schedule cycles --order priority --seed " + std::to_string(c.seed) +
+                             " --reading " + reading;
+    // Untraced to 500 rounds: the driver adds the loop up and says where its state came back.
+    ES::Conjecture_case<Point> to_limit = c;
+    to_limit.max_cycles = 500;
+    const ES::Conjecture_outcome o = ES::run_conjecture_case(to_limit);
+    REQUIRE(o.loop_round == c.max_cycles);
+    REQUIRE(o.loop_period > 0);
+    const Run run = w.run(args + " --max-cycles 500 --stats " + w.path("s.json"));
+    INFO(run.err);
+    REQUIRE(run.exit_code == 0);
+    REQUIRE(run.out.find("cycle limit reached after 500 rounds") != std::string::npos);
+    REQUIRE(run.out.find("loop: the state after round " + std::to_string(o.loop_round) + " is that after round " +
+                         std::to_string(o.loop_round - o.loop_period)) != std::string::npos);
+    const auto stats = nlohmann::json::parse(Workdir::slurp(w.path("s.json")));
+    REQUIRE(stats.at("loop").at("round") == o.loop_round);
+    REQUIRE(stats.at("loop").at("period") == o.loop_period);
+    REQUIRE(stats.at("ending") == "cycle limit reached");
+    // Traced to that round: the fixture's trace, which the checker certifies.
+    REQUIRE(w.run(args + " --max-cycles " + std::to_string(c.max_cycles) + " --trace " + w.path("t.jsonl")).exit_code == 0);
+    const std::string trace = Workdir::slurp(w.path("t.jsonl"));
+    REQUIRE(trace == Workdir::slurp(path.substr(0, path.size() - 5) + ".trace.jsonl"));
+    const auto r = check_text(trace);
+    REQUIRE(r.loop_certified);
+    REQUIRE(r.loop_to == o.loop_round);
+    REQUIRE(r.loop_to - r.loop_from == o.loop_period);
+    ++loops;
+  }
+  REQUIRE(loops == 36);
+
+  // Readings the program cannot run as asked are refused before any work.
+  const std::string base = "optimize " + w.path("c.ele") + " -o " + w.path("x.ele") + " ";
+  for(const auto& [args, what] : std::vector<std::pair<std::string, std::string>>{
+          {"--reading never-cleared,pass-over,no-swap", "--reading sets the helper strategy's reading"},
+          {"--helper --schedule cycles --reading never-cleared,pass-over", "is not a reading"},
+          {"--helper --schedule cycles --reading until-destroyed,pass-over,no-swap,later", "is not a reading"},
+          {"--helper --reading never-cleared,pass-over,no-swap", "runs on the paper's cycles: add --schedule cycles"},
+          {"--helper --schedule cycles --order storage --reading until-destroyed,facet-cells,no-swap,same-cycle",
+           "needs --order priority or random"},
+          {"--helper --order fixed", "--order is storage, random or priority"},
+          {"--criterion aspect-ratio --order priority", "--order and --schedule set the paper's flip driver"}})
+    require_clean_rejection(w, base + args, what, {"c.node", "c.ele", "out.ele", "out.node", "s.json", "t.jsonl"});
+  // The package's reading is the work queue's: no --schedule cycles needed.
+  REQUIRE(w.run(base + "--helper --order priority --seed 3 --reading until-destroyed,pass-over,no-swap-no-tag").exit_code == 0);
 }
 
 TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[conjectures][traces]")

@@ -35,7 +35,11 @@ int main(int argc, char** argv)
                        "(default); or paper-flips: the paper's driver (rounds over every facet)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "placing|placing:input|delaunay|scramble:K (point sets)");
-  optimize->add_option("--order", opt.order, "face order: storage or random (default: storage; random with --helper)");
+  optimize->add_option("--order", opt.order, "face order: storage, random (drawn anew each cycle) or priority (a "
+                       "fixed order of vertex triples drawn from --seed); default storage, random with --helper");
+  optimize->add_option("--reading", opt.reading, "with --helper: its reading of Algorithm 4, e.g. "
+                       "never-cleared,facet-cells,no-swap (doc/Edge_swapping_3/traces.md); other than the default "
+                       "with --schedule cycles");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
   optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none");
   optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);

@@ -9,6 +9,7 @@
 #include <CGAL/edge_swapping_3.h>
 #include <CGAL/Edge_swapping_3/mesh_statistics.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Visit_trace.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
@@ -23,6 +24,7 @@ struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order;
   std::string perturb = "cgal", history, stats, schedule = "queue", trace;
+  std::string reading; ///< the helper's reading of Algorithm 4 (empty: the package's)
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   bool helper = false, start_given = false, paper = false;
   double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
@@ -179,8 +181,25 @@ inline int run_optimize(const Optimize_options& o)
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
-  if(!o.order.empty() && o.order != "storage" && o.order != "random") throw Usage_error("--order is storage or random");
+  ES::Face_order face_order = ES::STORAGE_ORDER;
+  if(!o.order.empty() && !ES::face_order_from_name(o.order, face_order))
+    throw Usage_error("--order is storage, random or priority");
   if(o.schedule != "queue" && o.schedule != "cycles") throw Usage_error("--schedule is queue or cycles");
+  ES::Helper_reading reading;
+  if(!o.reading.empty())
+  {
+    if(!o.helper) throw Usage_error("--reading sets the helper strategy's reading of Algorithm 4: add --helper");
+    if(!ES::helper_reading_from_name(o.reading, reading))
+      throw Usage_error("--reading '" + o.reading + "' is not a reading: LIFETIME,CONDITION,ENDING[,same-cycle] with "
+                        "LIFETIME until-destroyed, cleared-each-cycle or never-cleared, CONDITION pass-over, "
+                        "any-tetrahedron or facet-cells, ENDING no-swap-no-tag or no-swap (doc/Edge_swapping_3/traces.md)");
+    if(!reading.is_default() && o.schedule != "cycles")
+      throw Usage_error("--reading " + o.reading + " runs on the paper's cycles: add --schedule cycles (the work "
+                        "queue runs the package's reading, until-destroyed,pass-over,no-swap-no-tag)");
+    if(reading.made_facets == ES::MADE_FACETS_SAME_CYCLE && o.order != "priority" && o.order != "random")
+      throw Usage_error("--reading " + o.reading + " visits the facets made in a cycle in that cycle, which needs "
+                        "--order priority or random");
+  }
   if(o.paper && o.criterion != "delaunay")
     throw Usage_error("--paper turns off the Delaunay repair; it cannot go with --criterion " + o.criterion);
   if(o.start.rfind("scramble:", 0) == 0) whole_number(o.start.substr(9), "--start scramble:K");
@@ -231,15 +250,15 @@ inline int run_optimize(const Optimize_options& o)
   namespace np = ES::parameters;
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
   // The library's defaults: storage order, but random for the helper (which can loop in storage order).
-  const bool random_order = o.order == "random" || (o.order.empty() && o.helper);
+  if(o.order.empty() && o.helper) face_order = ES::RANDOM_ORDER;
   const auto parameters = np::schedule(
     o.schedule == "queue" ? ES::WORK_QUEUE : ES::PAPER_CYCLES,
-    np::face_order(random_order ? ES::RANDOM_ORDER : ES::STORAGE_ORDER,
+    np::face_order(face_order, np::helper_reading(reading,
                    np::perturbation(perturbation,
                                     np::record_non_delaunay_facets(!o.history.empty(),
                                     np::cycle_visitor(cycle_progress(o.helper ? "helper" : o.criterion),
                                     np::delaunay_repair(!o.paper, CGAL::parameters::random_seed(o.seed)
-                                                                    .number_of_iterations(o.max_cycles)))))));
+                                                                    .number_of_iterations(o.max_cycles))))))));
 
   // A Medit mesh keeps its boundaries and subdomains; a point set or a
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
@@ -258,9 +277,9 @@ inline int run_optimize(const Optimize_options& o)
     ES::Visit_trace_writer<Point> writer(trace, in.points);
     writer.start(tr, {{"strategy", o.helper ? "helper" : "plain"},
                       {"schedule", o.schedule == "queue" ? "queue" : "cycles"},
-                      {"order", random_order ? "random" : "storage"},
+                      {"order", ES::face_order_name(face_order)},
                       {"seed", o.seed},
-                      {"reading", ES::helper_reading_name(ES::Helper_reading())},
+                      {"reading", ES::helper_reading_name(reading)},
                       {"max_rounds", o.max_cycles}});
     report = run(np::visit_visitor(std::ref(writer), parameters));
     writer.finish(ES::swap_ending_name(report.ending), report.number_of_cycles());
@@ -293,6 +312,7 @@ inline int run_optimize(const Optimize_options& o)
                           {"schedule", o.schedule},
                           {"visits", report.number_of_visits()},
                           {"seconds", report.seconds}};
+      if(report.loop_period > 0) j["loop"] = {{"round", report.loop_round}, {"period", report.loop_period}};
       if(repairs)
         j["delaunay_repair"] = {{"path", ES::delaunay_repair_path_name(report.repair_path)},
                                 {"stuck_after_plain_flips", report.stuck_after_plain_flips},
@@ -307,6 +327,10 @@ inline int run_optimize(const Optimize_options& o)
             << report.number_of_cycles() << " rounds; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
             << t[2] << ", 4-4 " << t[3] << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; "
             << report.seconds << " s\n";
+  if(report.loop_period > 0)
+    std::cout << "loop: the state after round " << report.loop_round << " is that after round "
+              << report.loop_round - report.loop_period << " (period " << report.loop_period
+              << "); rounds to the limit added up\n";
   if(repairs && report.repair_path != ES::PLAIN_FLIPS)
     std::cout << "delaunay repair: plain flips left " << report.stuck_after_plain_flips
               << " faces not locally Delaunay; helper " << report.helper_rounds << " rounds"
