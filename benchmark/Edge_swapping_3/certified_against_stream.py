@@ -9,7 +9,12 @@
 # cycle limit as the stream tallied them, and the runs, runs at the limit,
 # loops certified and runs ending later that the certification found.
 #
-#   certified_against_stream.py --stream FILE [FILE ...] --certified DIR [DIR ...]
+#   certified_against_stream.py --stream FILE [FILE ...] --certified DIR [DIR ...] [--batches I/N]
+#
+# --batches I/N counts only the stream's batches numbered I modulo N (the
+# first's start divided by the batch): the shard I/N of a whole stream (one run
+# without --shard), as certify_fixed_order_loops.sh --shard I/N --stream-batch B
+# takes it, so that each shard is set beside the stream as it is certified.
 #
 # Exit 0 when every reading of the stream is in the DIRs with the same runs
 # and runs at the limit, and each run at the limit is a certified loop or was
@@ -33,18 +38,32 @@ class Bad(Exception):
     pass
 
 
-def stream_counts(paths):
-    """Per reading, [fixed-order helper runs, of them at the cycle limit], summed over the files."""
+def stream_counts(paths, batches=None):
+    """Per reading, [fixed-order helper runs, of them at the cycle limit], summed over the files;
+    with batches (I, N), over the batches numbered I modulo N of a whole stream."""
     counts = collections.defaultdict(lambda: [0, 0])
     for path in paths:
         finished = False
+        batch = None
         try:
             with (lzma.open(path, "rt") if path.endswith(".xz") else open(path)) as f:
                 for number, line in enumerate(f, 1):
                     try:
-                        tally = json.loads(line).get("tally")
+                        entry = json.loads(line)
+                        if batches is not None and "stream" in entry:
+                            if entry["stream"]["shard"] != "0/1":
+                                raise Bad("%s:%d: --batches takes a whole stream, not its shard %s"
+                                          % (path, number, entry["stream"]["shard"]))
+                            batch = int(entry["stream"]["batch"])
+                        tally = entry.get("tally")
                         if tally is None:
                             continue
+                        if batches is not None:
+                            if not batch:
+                                raise Bad("%s:%d: a tally before the stream's batch size" % (path, number))
+                            finished = finished or tally["complete"] is True
+                            if int(tally["first"]) // batch % batches[1] != batches[0]:
+                                continue
                         finished = finished or tally["complete"] is True
                         for row in tally["rows"]:
                             if row["strategy"] == "helper" and row["order"] == "priority":
@@ -64,17 +83,33 @@ def stream_counts(paths):
     return counts
 
 
+def shard_of(text):
+    """I/N with 0 <= I < N, as (I, N); None for another text."""
+    parts = text.split("/")
+    if len(parts) != 2 or not all(p.isdigit() and len(p) < 10 for p in parts):
+        return None
+    i, n = int(parts[0]), int(parts[1])
+    return (i, n) if i < n else None
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description="loops certified on a stream's shard against the stream's counts")
     parser.add_argument("--stream", nargs="+", required=True, metavar="FILE")
     parser.add_argument("--certified", nargs="+", required=True, metavar="DIR")
+    parser.add_argument("--batches", metavar="I/N", help="only the batches numbered I modulo N of a whole stream")
     args = parser.parse_args(argv)
+    batches = None
+    if args.batches is not None:
+        batches = shard_of(args.batches)
+        if batches is None:
+            sys.stderr.write("certified_against_stream.py: --batches %s: not I/N with 0 <= I < N\n" % args.batches)
+            return 2
     for d in args.certified:
         if not os.path.isdir(d):
             sys.stderr.write("certified_against_stream.py: not a directory: %s\n" % d)
             return 2
     try:
-        stream = stream_counts(args.stream)
+        stream = stream_counts(args.stream, batches)
         totals, _, complete, _, _ = summarize_certified_loops.collect(args.certified)
     except (Bad, summarize_certified_loops.Mixed) as e:
         sys.stderr.write("certified_against_stream.py: %s\n" % e)

@@ -177,6 +177,24 @@ PY
     fail "stream shard: not 36 readings agreeing on 86 runs at the limit"
   grep -qF '| `until-destroyed,any-tetrahedron,no-swap` | 48 | 10 | 48 | 10 | 10 | 0 | yes |' "$work/against.md" ||
     fail "stream shard: until-destroyed,any-tetrahedron,no-swap is not 48 runs, 10 at the limit, 10 loops"
+  # The whole stream, its batches numbered 1 modulo 3 (--batches 1/3): the same table as the
+  # shard's own stream. Another shard of it differs (exit 1); a shard's stream, or a --batches
+  # that is not I/N with I < N, is refused (exit 2).
+  "$edge_swap" experiment -o "$work/stream_whole.jsonl" --starts topcom --stream --stream-batch 16 \
+    --max-cycles 200 --threads 1 --strategies helper --orders priority --families random-integer --sizes 8 --seeds 1 \
+    --readings all > /dev/null 2>&1 || fail "edge_swap experiment --stream --stream-batch 16"
+  python3 "$against" --stream "$work/stream_whole.jsonl" --certified "$work/stream_shard" --batches 1/3 |
+    cmp -s - "$work/against.md" || fail "--batches 1/3 of the whole stream gives another table than the shard's stream"
+  status=0
+  python3 "$against" --stream "$work/stream_whole.jsonl" --certified "$work/stream_shard" --batches 2/3 > /dev/null ||
+    status=$?
+  [ $status = 1 ] || fail "--batches 2/3 against shard 1/3: exit $status, not 1"
+  for bad in "--stream $work/stream_shard.jsonl --batches 1/3" "--stream $work/stream_whole.jsonl --batches 3/3" \
+             "--stream $work/stream_whole.jsonl --batches 1" "--stream $work/stream_whole.jsonl --batches -1/3"; do
+    status=0
+    python3 "$against" $bad --certified "$work/stream_shard" > /dev/null 2> "$work/against_bad.txt" || status=$?
+    [ $status = 2 ] && [ -s "$work/against_bad.txt" ] || fail "certified against $bad: exit $status, not 2 with a message"
+  done
   # Other starts (the per-start run) differ: exit 1. A stream cut short (as text or xz) or not JSON: exit 2.
   status=0
   python3 "$against" --stream "$work/stream_shard.jsonl" --certified "$work/per_start" > /dev/null || status=$?

@@ -42,8 +42,7 @@
 
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
-#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Gmpzf.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
@@ -61,8 +60,10 @@
 namespace trace_checker {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K; // exact predicates
-// Exact volumes: plain rationals, as a lazy kernel's thread-safe evaluation costs more than it saves here.
-typedef CGAL::Simple_cartesian<CGAL::Exact_rational> EK;
+// Exact volumes: a double is m 2^e, and sums, differences and products of such
+// numbers are exact in GMP's mpz-based floats, without the rationals' gcds.
+typedef CGAL::Gmpzf Exact;
+typedef std::array<Exact, 3> Exact_point;
 typedef K::Point_3 Point;
 typedef std::array<std::size_t, 4> Cell;  // sorted point numbers
 typedef std::array<std::size_t, 3> Facet; // sorted point numbers
@@ -189,6 +190,7 @@ public:
       // Exact arithmetic needs finite coordinates; the package's range is 1e-30 to 1e30.
       for(double v : {x, y, z}) require(std::isfinite(v) && std::abs(v) <= 1e30, "a coordinate that is not finite or beyond 1e30");
       points_.emplace_back(x, y, z);
+      exact_points_.push_back({Exact(x), Exact(y), Exact(z)}); // once, not at every flip
     }
     for(const auto& c : header.at("cells")) add_cell(cell_of(c));
     check_start();
@@ -333,17 +335,17 @@ private:
   /// the cells' volumes add up to the hull's.
   void check_start() const
   {
-    CGAL::Cartesian_converter<K, EK> to_exact;
-    const EK::FT cells_volume = volume(std::vector<Cell>(cells_.begin(), cells_.end()));
+    const Exact cells_volume = volume(std::vector<Cell>(cells_.begin(), cells_.end()));
     for(const auto& [f, holders] : facets_)
       if(holders.size() == 2)
         require(orientation(f[0], f[1], f[2], apex(holders[0], f)) == -orientation(f[0], f[1], f[2], apex(holders[1], f)),
                 "two cells on the same side of a facet in the start");
     CGAL::Delaunay_triangulation_3<K> hull(points_.begin(), points_.end()); // its cells fill the hull; exact predicates
-    EK::FT hull_volume = 0;
+    auto exact = [](const Point& p) { return Exact_point{Exact(p.x()), Exact(p.y()), Exact(p.z())}; };
+    Exact hull_volume = 0;
     for(auto c : hull.finite_cell_handles())
-      hull_volume += CGAL::volume(to_exact(c->vertex(0)->point()), to_exact(c->vertex(1)->point()),
-                                  to_exact(c->vertex(2)->point()), to_exact(c->vertex(3)->point()));
+      hull_volume += six_volume(exact(c->vertex(0)->point()), exact(c->vertex(1)->point()),
+                                exact(c->vertex(2)->point()), exact(c->vertex(3)->point()));
     require(cells_volume == hull_volume, "the start's cells do not fill the convex hull once");
   }
 
@@ -477,16 +479,28 @@ private:
     return xy;
   }
 
-  /// The cells' total volume, exactly.
-  EK::FT volume(const std::vector<Cell>& cells) const
+  /// Six times the signed volume of the tetrahedron p q r s, exactly.
+  static Exact six_volume(const Exact_point& p, const Exact_point& q, const Exact_point& r, const Exact_point& s)
   {
-    CGAL::Cartesian_converter<K, EK> to_exact;
-    EK::FT sum = 0;
+    Exact d[3][3];
+    for(int k = 0; k < 3; ++k)
+    {
+      d[0][k] = q[k] - p[k];
+      d[1][k] = r[k] - p[k];
+      d[2][k] = s[k] - p[k];
+    }
+    return d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+           d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  }
+
+  /// Six times the cells' total volume, exactly.
+  Exact volume(const std::vector<Cell>& cells) const
+  {
+    Exact sum = 0;
     for(const Cell& t : cells)
     {
       const Cell o = oriented(t);
-      sum += CGAL::volume(to_exact(points_[o[0]]), to_exact(points_[o[1]]), to_exact(points_[o[2]]),
-                          to_exact(points_[o[3]]));
+      sum += six_volume(exact_points_[o[0]], exact_points_[o[1]], exact_points_[o[2]], exact_points_[o[3]]);
     }
     return sum;
   }
@@ -928,6 +942,7 @@ private:
   std::uint64_t seed_ = 0;
   std::size_t max_rounds_ = 0;
   std::vector<Point> points_;
+  std::vector<Exact_point> exact_points_; // the same points, for exact volumes
   std::set<Cell> cells_, tags_;
   std::map<Facet, std::vector<Cell>> facets_;
   std::vector<Facet> listed_;
