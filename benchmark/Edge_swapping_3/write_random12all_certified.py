@@ -192,7 +192,9 @@ def section(shards, readings):
     by_fewest = collections.Counter(r[2] for r in rows)
     differ = [r for r in rows if r[4]]
     left = SHARDS - len(shards)
-    median = statistics.median(s.seconds for s in shards if not s.streamed)
+    # The estimate for the shards left: the current pipeline's shards only (one trace a loop).
+    current = [s for s in shards if s.pipeline() == "stop 51"]
+    median = statistics.median(s.seconds for s in current)
     out = []
     out.append("## Set 1 under all 36 readings, random12all's shards (stops %s)\n" % stops_text(all_stops))
     out.append("""random12all (`random12all_shards.md`) runs every fine triangulation of set 1 under all 36
@@ -257,10 +259,11 @@ loops were traced in a line of its own, and the pipeline column says which shard
     out.append("The shards added up (`summarize_certified_loops.py` on the directories):\n")
     out.append(summary_table(shards))
     out.append("")
-    out.append("The stream's other %d shards are left. At the median time of a shard held in one process "
-               "(%s s), that is about %d core-hours; to spread them, a Slurm array "
-               "(`s=${SLURM_ARRAY_TASK_ID}` in the commands above).\n" % (
-                   left, format(int(median), ","), round(left * median / 3600)))
+    out.append("The stream's other %d shards are left. At the median time of the %d shards run by the "
+               "current pipeline (one trace a loop; %s s, shards %s, beside other jobs), that is about %d core-hours; to spread "
+               "them, a Slurm array (`s=${SLURM_ARRAY_TASK_ID}` in the commands above).\n" % (
+                   left, len(current), format(int(median), ","), ranges([s.index for s in current]),
+                   round(left * median / 3600)))
     return "\n".join(out), runs, limit, all_stops, starts
 
 
