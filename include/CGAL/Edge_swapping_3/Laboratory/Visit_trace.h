@@ -19,6 +19,7 @@
 #include <map>
 #include <ostream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -60,40 +61,59 @@ public:
     out_ << header.dump() << '\n';
   }
 
+  // The visit and round lines are written by hand, as nlohmann::json's dump()
+  // writes them (keys in sorted order, no spaces), for speed: a trace has a line
+  // per visit, and the laboratory writes millions. The names have no characters
+  // to escape.
+
   /// One line per visit.
   template <class Tr>
   void visit(const Tr&, const Visit_record<Tr>& r)
   {
-    nlohmann::json line;
-    line["facet"] = {number(r.facet[0]), number(r.facet[1]), number(r.facet[2])};
-    line["apexes"] = {number(r.apexes[0]), number(r.apexes[1])};
-    line["delaunay"] = r.locally_delaunay;
-    line["kind"] = configuration_kind_name(r.kind);
-    line["cells"] = cell_list(r.cells);
-    std::vector<int> tagged(r.tagged_before.begin(), r.tagged_before.end());
-    line["tagged"] = tagged;
-    line["new_tags"] = cell_list(r.new_tags);
-    line["flip"] = r.flip < 0 ? nlohmann::json(nullptr) : nlohmann::json(flip_kind_name(Flip_kind(r.flip)));
-    line["created"] = cell_list(r.created);
-    if(r.scanned) line["scan"] = true;
-    out_ << line.dump() << '\n';
+    line_.clear();
+    line_ += "{\"apexes\":[";
+    append_numbers(r.apexes);
+    line_ += "],\"cells\":";
+    append_cells(r.cells);
+    line_ += ",\"created\":";
+    append_cells(r.created);
+    line_ += r.locally_delaunay ? ",\"delaunay\":true,\"facet\":[" : ",\"delaunay\":false,\"facet\":[";
+    append_numbers(r.facet);
+    line_ += "],\"flip\":";
+    if(r.flip < 0)
+      line_ += "null";
+    else
+      append_name(flip_kind_name(Flip_kind(r.flip)));
+    line_ += ",\"kind\":";
+    append_name(configuration_kind_name(r.kind));
+    line_ += ",\"new_tags\":";
+    append_cells(r.new_tags);
+    if(r.scanned) line_ += ",\"scan\":true";
+    line_ += ",\"tagged\":[";
+    for(std::size_t k = 0; k < r.tagged_before.size(); ++k)
+      line_ += k == 0 ? (r.tagged_before[k] ? "1" : "0") : (r.tagged_before[k] ? ",1" : ",0");
+    line_ += "]}\n";
+    out_ << line_;
   }
 
   /// One line per round: its number, its swaps, and the state at its end.
   template <class Tr, class IsTagged>
   void end_of_round(const Tr& tr, const Cycle_record& record, const IsTagged& is_tagged)
   {
-    nlohmann::json line;
-    line["round"] = record.cycle;
-    line["swaps"] = record.total_swaps();
-    line["new_tags"] = record.new_tags;
-    line["cells"] = cells_of(tr);
     std::vector<std::array<std::size_t, 4>> tagged;
     for(auto c : tr.finite_cell_handles())
       if(is_tagged(c)) tagged.push_back(sorted_numbers(c));
     std::sort(tagged.begin(), tagged.end());
-    line["tagged"] = tagged;
-    out_ << line.dump() << '\n';
+    line_.clear();
+    line_ += "{\"cells\":";
+    append_sorted_cells(cells_of(tr));
+    line_ += ",\"new_tags\":" + std::to_string(record.new_tags);
+    line_ += ",\"round\":" + std::to_string(record.cycle);
+    line_ += ",\"swaps\":" + std::to_string(record.total_swaps());
+    line_ += ",\"tagged\":";
+    append_sorted_cells(tagged);
+    line_ += "}\n";
+    out_ << line_;
   }
 
   /// The last line: how the run ended.
@@ -127,12 +147,50 @@ private:
     return t;
   }
 
-  template <class Cells>
-  nlohmann::json cell_list(const Cells& cells) const
+  /// The vertices' numbers, comma-separated.
+  template <class Vertices>
+  void append_numbers(const Vertices& vertices)
   {
-    nlohmann::json list = nlohmann::json::array();
-    for(const auto& t : cells) list.push_back({number(t[0]), number(t[1]), number(t[2]), number(t[3])});
-    return list;
+    for(std::size_t k = 0; k < vertices.size(); ++k)
+    {
+      if(k > 0) line_ += ',';
+      line_ += std::to_string(number(vertices[k]));
+    }
+  }
+
+  /// A list of cells, each the numbers of its vertices in the cell's order.
+  template <class Cells>
+  void append_cells(const Cells& cells)
+  {
+    line_ += '[';
+    for(std::size_t k = 0; k < cells.size(); ++k)
+    {
+      line_ += k == 0 ? "[" : ",[";
+      append_numbers(cells[k]);
+      line_ += ']';
+    }
+    line_ += ']';
+  }
+
+  /// A list of cells given by their numbers.
+  void append_sorted_cells(const std::vector<std::array<std::size_t, 4>>& cells)
+  {
+    line_ += '[';
+    for(std::size_t k = 0; k < cells.size(); ++k)
+    {
+      const auto& t = cells[k];
+      line_ += k == 0 ? "[" : ",[";
+      line_ += std::to_string(t[0]) + ',' + std::to_string(t[1]) + ',' + std::to_string(t[2]) + ',' +
+               std::to_string(t[3]) + ']';
+    }
+    line_ += ']';
+  }
+
+  void append_name(const char* name)
+  {
+    line_ += '"';
+    line_ += name;
+    line_ += '"';
   }
 
   /// The finite cells, each as its sorted point numbers, in sorted order: the state's canonical form.
@@ -147,6 +205,7 @@ private:
 
   std::ostream& out_;
   std::map<Point, std::size_t, Less_xyz> number_;
+  std::string line_; // the line being written, its memory kept from line to line
 };
 
 } // namespace Edge_swapping_3
