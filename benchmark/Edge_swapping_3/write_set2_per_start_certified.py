@@ -95,8 +95,11 @@ The directories are kept in `random12_per_start_certified/` (with `/usr/bin/time
 `benchmark/Edge_swapping_3/write_set2_per_start_certified.py`, which stops unless each shard
 agrees with the stream. **In each shard the runs at the limit are the stream's in number, and
 every one of the %s is a loop certified by the checker.** CPU is user seconds of the shard's
-processes (the program and TOPCOM, which enumerates the whole set for each shard); wall
-seconds beside the other lane and, at times, builds and tests.
+processes (the program and TOPCOM, which enumerates the whole set for each shard), wall the
+shard's seconds, beside the other lane and, at times, builds and the test suite on the 2
+cores. Both move with that load (shards 2 to 5 ran with the same program, 500 to 602 CPU
+seconds), so they do not compare the two programs; the measurement in `conjectures.md` ("Stop
+52 made the two halves ...") does.
 """ % format(limit, ","))
     out.append("| shard | runs | at the limit | certified loops | fewest swaps (first start, its priority seed) "
                "| CPU s | wall s | program |")
