@@ -58,13 +58,12 @@ def stream_counts(paths, batches=None):
                         tally = entry.get("tally")
                         if tally is None:
                             continue
+                        finished = finished or tally["complete"] is True
                         if batches is not None:
                             if not batch:
                                 raise Bad("%s:%d: a tally before the stream's batch size" % (path, number))
-                            finished = finished or tally["complete"] is True
                             if int(tally["first"]) // batch % batches[1] != batches[0]:
                                 continue
-                        finished = finished or tally["complete"] is True
                         for row in tally["rows"]:
                             if row["strategy"] == "helper" and row["order"] == "priority":
                                 count = counts[row.get("reading", PACKAGES_READING)]
