@@ -1450,8 +1450,10 @@ TEST_CASE("edge_swap optimize --order priority --reading: each of the 36 loop fi
           {"--helper --order fixed", "--order is storage, random or priority"},
           {"--criterion aspect-ratio --order priority", "--order and --schedule set the paper's flip driver"}})
     require_clean_rejection(w, base + args, what, {"c.node", "c.ele", "out.ele", "out.node", "s.json", "t.jsonl"});
-  // The package's reading is the work queue's: no --schedule cycles needed.
+  // The package's reading is the work queue's: no --schedule cycles needed. Without --order
+  // the helper's order is random, which same-cycle takes.
   REQUIRE(w.run(base + "--helper --order priority --seed 3 --reading until-destroyed,pass-over,no-swap-no-tag").exit_code == 0);
+  REQUIRE(w.run(base + "--helper --schedule cycles --reading until-destroyed,facet-cells,no-swap,same-cycle").exit_code == 0);
 }
 
 TEST_CASE("The swap conditions pass-over and facet-cells make the same runs", "[conjectures][traces]")

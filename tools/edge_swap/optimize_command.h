@@ -184,6 +184,8 @@ inline int run_optimize(const Optimize_options& o)
   ES::Face_order face_order = ES::STORAGE_ORDER;
   if(!o.order.empty() && !ES::face_order_from_name(o.order, face_order))
     throw Usage_error("--order is storage, random or priority");
+  // The library's defaults: storage order, but random for the helper (which can loop in storage order).
+  if(o.order.empty() && o.helper) face_order = ES::RANDOM_ORDER;
   if(o.schedule != "queue" && o.schedule != "cycles") throw Usage_error("--schedule is queue or cycles");
   ES::Helper_reading reading;
   if(!o.reading.empty())
@@ -196,7 +198,7 @@ inline int run_optimize(const Optimize_options& o)
     if(!reading.is_default() && o.schedule != "cycles")
       throw Usage_error("--reading " + o.reading + " runs on the paper's cycles: add --schedule cycles (the work "
                         "queue runs the package's reading, until-destroyed,pass-over,no-swap-no-tag)");
-    if(reading.made_facets == ES::MADE_FACETS_SAME_CYCLE && o.order != "priority" && o.order != "random")
+    if(reading.made_facets == ES::MADE_FACETS_SAME_CYCLE && face_order == ES::STORAGE_ORDER)
       throw Usage_error("--reading " + o.reading + " visits the facets made in a cycle in that cycle, which needs "
                         "--order priority or random");
   }
@@ -249,8 +251,6 @@ inline int run_optimize(const Optimize_options& o)
   const ES::Mesh_statistics before = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
   namespace np = ES::parameters;
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
-  // The library's defaults: storage order, but random for the helper (which can loop in storage order).
-  if(o.order.empty() && o.helper) face_order = ES::RANDOM_ORDER;
   const auto parameters = np::schedule(
     o.schedule == "queue" ? ES::WORK_QUEUE : ES::PAPER_CYCLES,
     np::face_order(face_order, np::helper_reading(reading,
