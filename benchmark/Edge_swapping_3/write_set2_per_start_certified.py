@@ -77,6 +77,7 @@ def section(shards, folders):
                              capture_output=True, text=True, check=True).stdout.strip()
     limit = sum(s["limit"] for s in shards)
     indices = [s["index"] for s in shards]
+    later = [s for s in shards if s["index"] not in PROGRAM]
     out = ["## Set 2 with a priority per start, shards %s of %d (since stop 52)\n" % (text_of(indices), SHARDS)]
     out.append("""The same reading with `--order-seeds per-start` on set 2 (seed `order_seed_of_start(2, I)`
 for the start `topcom:I`), whose stream left 1,154,028 of the 5,563,240 runs at the limit
@@ -97,10 +98,11 @@ agrees with the stream. **In each shard the runs at the limit are the stream's i
 every one of the %s is a loop certified by the checker.** CPU is user seconds of the shard's
 processes (the program and TOPCOM, which enumerates the whole set for each shard), wall the
 shard's seconds, beside the other lane and, at times, builds and the test suite on the 2
-cores. Both move with that load (shards 2 to 5 ran with the same program, 500 to 602 CPU
+cores. Both move with that load (shards %s ran with the same program, %s to %s CPU
 seconds), so they do not compare the two programs; the measurement in `conjectures.md` ("Stop
 52 made the two halves ...") does.
-""" % format(limit, ","))
+""" % (format(limit, ","), text_of([s["index"] for s in later]), format(round(min(s["user"] for s in later)), ","),
+       format(round(max(s["user"] for s in later)), ",")))
     out.append("| shard | runs | at the limit | certified loops | fewest swaps (first start, its priority seed) "
                "| CPU s | wall s | program |")
     out.append("|---:|---:|---:|---:|---|---:|---:|---|")
