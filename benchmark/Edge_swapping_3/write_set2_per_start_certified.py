@@ -77,7 +77,7 @@ def section(shards, folders):
                              capture_output=True, text=True, check=True).stdout.strip()
     limit = sum(s["limit"] for s in shards)
     indices = [s["index"] for s in shards]
-    later = [s for s in shards if s["index"] not in PROGRAM]
+    later = [s for s in shards if s["index"] not in PROGRAM] or shards  # the range of one program's shards
     out = ["## Set 2 with a priority per start, shards %s of %d (since stop 52)\n" % (text_of(indices), SHARDS)]
     out.append("""The same reading with `--order-seeds per-start` on set 2 (seed `order_seed_of_start(2, I)`
 for the start `topcom:I`), whose stream left 1,154,028 of the 5,563,240 runs at the limit
