@@ -267,6 +267,23 @@ loops were traced in a line of its own, and the pipeline column says which shard
     return "\n".join(out), runs, limit, all_stops, starts
 
 
+def check_files(files):
+    """files: (path, new text, text now). Says which would change; 1 if any would."""
+    changed = [path for path, new, now in files if new != now]
+    for path in changed:
+        print("would change " + os.path.relpath(path, ROOT))
+    return 1 if changed else 0
+
+
+def write_files(files):
+    """files: (path, new text, text now). Writes those that change."""
+    for path, new, now in files:
+        if new != now:
+            with open(path, "w") as f:
+                f.write(new)
+            print("wrote " + os.path.relpath(path, ROOT))
+
+
 def replace_once(text, pattern, replacement, what):
     new, n = re.subn(pattern, lambda m: replacement, text, flags=re.S)
     assert n == 1, "%s: %d matches" % (what, n)
@@ -311,16 +328,9 @@ def main(check):
         "others; stops %s, `results/random12_certified_loops.md`)" % (
             indices, format(starts, ","), format(limit, ","), small, fewest[small], rest[0],
             rest[-1], stops_text(stops)), "fixed-order statement")
-    changed = [(path, text) for path, text, old in ((LOOPS_MD, new_loops, loops_md),
-                                                   (CONJECTURES_MD, new_conjectures, conjectures)) if text != old]
     if check:
-        for path, _ in changed:
-            print("would change " + os.path.relpath(path, ROOT))
-        return 1 if changed else 0
-    for path, text in changed:
-        with open(path, "w") as f:
-            f.write(text)
-        print("wrote " + os.path.relpath(path, ROOT))
+        return check_files(((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures)))
+    write_files(((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures)))
     print("%d shards (%s), %s runs, %s at the limit, all certified loops, %s s" % (
         len(shards), indices, format(runs, ","), format(limit, ","), format(seconds, ",")))
     return 0

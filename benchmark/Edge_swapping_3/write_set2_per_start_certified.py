@@ -20,6 +20,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from write_random12all_certified import check_files, ranges, write_files  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 RESULTS = os.path.join(ROOT, "doc", "Edge_swapping_3", "results")
@@ -35,8 +38,10 @@ STREAM_AT_LIMIT = 1154028  # the whole stream's runs at the limit (stream_topcom
 PROGRAM = {0: "c8fe566", 1: "c8fe566"}
 LATER_PROGRAM = "3fd5e70"
 
-ALL_SEEDS = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
-FEWEST = re.compile(r"^fewest swaps in a certified loop: (\d+) \(seed 2, triangulation (\d+), its priority seed (\d+)\)$")
+ALL_SEEDS = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping "
+                       r"\((\d+) loops certified by the checker\), (\d+) stuck$")
+FEWEST = re.compile(r"^fewest swaps in a certified loop: (\d+) "
+                    r"\(seed 2, triangulation (\d+), its priority seed (\d+)\)$")
 TIME = re.compile(r"^([\d.]+)user [\d.]+system (?:(\d+):)?(\d+):([\d.]+)elapsed")
 
 
@@ -78,7 +83,7 @@ def section(shards, folders):
     limit = sum(s["limit"] for s in shards)
     indices = [s["index"] for s in shards]
     later = [s for s in shards if s["index"] not in PROGRAM] or shards  # the range of one program's shards
-    out = ["## Set 2 with a priority per start, shards %s of %d (since stop 52)\n" % (text_of(indices), SHARDS)]
+    out = ["## Set 2 with a priority per start, shards %s of %d (since stop 52)\n" % (ranges(indices), SHARDS)]
     out.append("""The same reading with `--order-seeds per-start` on set 2 (seed `order_seed_of_start(2, I)`
 for the start `topcom:I`), whose stream left 1,154,028 of the 5,563,240 runs at the limit
 (`results/random12_per_start/set2.jsonl.xz`). The shards are that stream's blocks of 4096 starts
@@ -101,7 +106,7 @@ shard's seconds, beside the other lane and, at times, builds and the test suite 
 cores. Both move with that load (shards %s ran with the same program, %s to %s CPU
 seconds), so they do not compare the two programs; the measurement in `conjectures.md` ("Stop
 52 made the two halves ...") does.
-""" % (format(limit, ","), text_of([s["index"] for s in later]), format(round(min(s["user"] for s in later)), ","),
+""" % (format(limit, ","), ranges([s["index"] for s in later]), format(round(min(s["user"] for s in later)), ","),
        format(round(max(s["user"] for s in later)), ",")))
     out.append("| shard | runs | at the limit | certified loops | fewest swaps (first start, its priority seed) "
                "| CPU s | wall s | program |")
@@ -128,12 +133,6 @@ def summed_seconds(body):
     return int(m.group(1).replace(",", ""))
 
 
-def text_of(indices):
-    if indices == list(range(indices[0], indices[-1] + 1)) and len(indices) > 2:
-        return "%d to %d" % (indices[0], indices[-1])
-    return ", ".join(map(str, indices[:-1])) + " and %d" % indices[-1] if len(indices) > 1 else str(indices[0])
-
-
 def main(check):
     found = []
     for name in os.listdir(KEPT):
@@ -156,41 +155,39 @@ def main(check):
     with open(CONJECTURES_MD) as f:
         conjectures = f.read()
     done = len(shards) == SHARDS and limit == STREAM_AT_LIMIT
-    sentence = ("Set 2's per-start runs at the limit (1,154,028) are %s (since stop 52; shards %s of 16 in blocks of 4096, "
-                "%s runs at the limit, the stream's counts block for block; `results/random12_certified_loops.md`)." % (
+    sentence = ("Set 2's per-start runs at the limit (1,154,028) are %s (since stop 52; shards %s of 16 in "
+                "blocks of 4096, %s runs at the limit, the stream's counts block for block; "
+                "`results/random12_certified_loops.md`)." % (
                     "all certified loops" if done else "certified loops in the shards done so far",
-                    text_of([s["index"] for s in shards]), format(limit, ",")))
-    new_conjectures, n = re.subn(r"Set 2's per-start runs at the limit \(1,154,028\) (?:are not all certified yet\.|"
-                                 r"are [^(]*\(since stop 52; .*?`results/random12_certified_loops\.md`\)\.)", lambda m: sentence,
-                                 conjectures)
+                    ranges([s["index"] for s in shards]), format(limit, ",")))
+    new_conjectures, n = re.subn(r"Set 2's per-start runs at the limit \(1,154,028\) "
+                                 r"(?:are not all certified yet\.|"
+                                 r"are [^(]*\(since stop 52; .*?`results/random12_certified_loops\.md`\)\.)",
+                                 lambda m: sentence, conjectures)
     runs = sum(s["runs"] for s in shards)
     seconds = summed_seconds(body)
     row = ("| 12 random integer points, set 2, a priority per start, shards %s of 16 (since stop 52; the stream's "
-           "counts block for block, `certified_against_stream.py --batches`) | the package's | %s | %s | %s | 0 | %s s |"
-           % (text_of([s["index"] for s in shards]), format(runs, ","), format(limit, ","), format(limit, ","),
+           "counts block for block, `certified_against_stream.py --batches`) | the package's "
+           "| %s | %s | %s | 0 | %s s |"
+           % (ranges([s["index"] for s in shards]), format(runs, ","), format(limit, ","), format(limit, ","),
               format(seconds, ",")))
     set1_row = re.escape("| 12 random integer points, set 1, a priority per start, in 6 shards (stops 44 and 45) |") + \
         r"[^\n]*\n"
-    new_conjectures, m = re.subn(r"(%s)(?:\| 12 random integer points, set 2, a priority per start[^\n]*\n)?" % set1_row,
-                                 lambda g: g.group(1) + row + "\n", new_conjectures)
+    set2_row = r"\| 12 random integer points, set 2, a priority per start[^\n]*\n"
+    new_conjectures, m = re.subn(r"(%s)(?:%s)?" % (set1_row, set2_row), lambda g: g.group(1) + row + "\n",
+                                 new_conjectures)
     new_conjectures, k = re.subn(r"set 1's 285,508 too, stop 45(?:; set 2's[^)]*)?\)",
                                  lambda g: "set 1's 285,508 too, stop 45; set 2's %s: %s, since stop 52)" % (
-                                     "1,154,028" if done else "in shards %s of 16 so far" % text_of(
+                                     "1,154,028" if done else "in shards %s of 16 so far" % ranges(
                                          [s["index"] for s in shards]), format(limit, ",")), new_conjectures)
     if (n, m, k) != (1, 1, 1):
         sys.stderr.write("write_set2_per_start_certified.py: conjectures.md has the sentence, the table row and the "
                          "statement on set 2 %d, %d and %d times, not once each\n" % (n, m, k))
         return 1
-    changed = [(path, text) for path, text, old in ((LOOPS_MD, new_loops, loops_md),
-                                                   (CONJECTURES_MD, new_conjectures, conjectures)) if text != old]
+    files = ((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures))
     if check:
-        for path, _ in changed:
-            print("would change " + os.path.relpath(path, ROOT))
-        return 1 if changed else 0
-    for path, text in changed:
-        with open(path, "w") as f:
-            f.write(text)
-        print("wrote " + os.path.relpath(path, ROOT))
+        return check_files(files)
+    write_files(files)
     print("%d shards, %s runs at the limit, all certified loops" % (len(shards), format(limit, ",")))
     return 0
 
