@@ -176,10 +176,11 @@ def main(check):
     set2_row = r"\| 12 random integer points, set 2, a priority per start[^\n]*\n"
     new_conjectures, m = re.subn(r"(%s)(?:%s)?" % (set1_row, set2_row), lambda g: g.group(1) + row + "\n",
                                  new_conjectures)
+    statement = ("set 2's %s too" % format(limit, ",") if done else
+                 "set 2's in shards %s of 16 so far: %s" % (ranges([s["index"] for s in shards]), format(limit, ",")))
     new_conjectures, k = re.subn(r"set 1's 285,508 too, stop 45(?:; set 2's[^)]*)?\)",
-                                 lambda g: "set 1's 285,508 too, stop 45; set 2's %s: %s, since stop 52)" % (
-                                     "1,154,028" if done else "in shards %s of 16 so far" % ranges(
-                                         [s["index"] for s in shards]), format(limit, ",")), new_conjectures)
+                                 lambda g: "set 1's 285,508 too, stop 45; %s, since stop 52)" % statement,
+                                 new_conjectures)
     if (n, m, k) != (1, 1, 1):
         sys.stderr.write("write_set2_per_start_certified.py: conjectures.md has the sentence, the table row and the "
                          "statement on set 2 %d, %d and %d times, not once each\n" % (n, m, k))
