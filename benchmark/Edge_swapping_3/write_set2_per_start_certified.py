@@ -103,9 +103,9 @@ agrees with the stream. **In each shard the runs at the limit are the stream's i
 every one of the %s is a loop certified by the checker.** CPU is user seconds of the shard's
 processes (the program and TOPCOM, which enumerates the whole set for each shard), wall the
 shard's seconds, beside the other lane and, at times, builds and the test suite on the 2
-cores. Both move with that load (shards %s ran with the same program, %s to %s CPU
-seconds), so they do not compare the two programs; the measurement in `conjectures.md` ("Stop
-52 made the two halves ...") does.
+cores. Both vary between shards of one program (shards %s ran with the same program, %s to %s
+CPU seconds), and not in step with that load, so they do not compare the two programs; the
+alternating measurement in `conjectures.md` ("Stop 52 made the two halves ...") does.
 """ % (format(limit, ","), ranges([s["index"] for s in later]), format(round(min(s["user"] for s in later)), ","),
        format(round(max(s["user"] for s in later)), ",")))
     out.append("| shard | runs | at the limit | certified loops | fewest swaps (first start, its priority seed) "
