@@ -224,11 +224,26 @@ TEST_CASE("TOPCOM's formats: integer points out and triangulations in and malfor
   REQUIRE(t.size() == 2);
   REQUIRE(t[0].size() == 2);
   REQUIRE(t[0][1] == std::array<std::size_t, 4>{1, 2, 3, 4});
-  for(const std::string bad : {"T[0] := {{0,1,2}};", "T[0] := {{0,1,2,3,4}};", "T[0] := {{0,1,x,3}};", "T[0] := {{0,1,2,3}"})
+  // Spaces and commas both separate; text after the closing brace is not read.
+  std::istringstream spaced("T[1] := { {0, 1 ,2,3} ,{ 4,5 6,7 }} ; anything\nnot a triangulation {\n");
+  const auto u = ES::IO::read_topcom_triangulations(spaced);
+  REQUIRE(u.size() == 1);
+  REQUIRE(u[0] == std::vector<std::array<std::size_t, 4>>{{0, 1, 2, 3}, {4, 5, 6, 7}});
+  // Each malformed line, with the message naming its line and column.
+  const std::pair<std::string, std::string> bad_lines[] = {
+    {"T[0] := {{0,1,2}};", "a simplex with 3 points"},
+    {"T[0] := {{0,1,2,3,4}};", "a simplex with more than four points"},
+    {"T[0] := {{0,1,x,3}};", "bad index at column 15"},
+    {"T[0] := {{0,1,2,3}", "unterminated"},
+    {"T[0] := {{0,1,2,3},x}", "expected '{' at column 20"},
+    {"T[0] := {{0,1,2,3},{1,2", "unterminated simplex"},
+    {"T[0] := [0,1]", "no '{'"},
+  };
+  for(const auto& [bad, what] : bad_lines)
   {
     INFO(bad);
-    std::istringstream b(bad + "\n");
-    REQUIRE_THROWS_WITH(ES::IO::read_topcom_triangulations(b), Catch::Contains("TOPCOM output line 1"));
+    std::istringstream b("\n" + bad + "\n");
+    REQUIRE_THROWS_WITH(ES::IO::read_topcom_triangulations(b), "TOPCOM output line 2: " + what);
   }
 }
 

@@ -18,6 +18,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace CGAL {
@@ -49,45 +50,52 @@ void write_topcom_points(std::ostream& os, const std::vector<Point>& points)
 /// Reads one line that TOPCOM printed (`points2allfinetriangs` and the
 /// like) into `cells`: false for a line that is not a triangulation (it is
 /// skipped); a malformed triangulation line throws, naming `line_number`.
-inline bool read_topcom_triangulation_line(const std::string& line, std::size_t line_number,
+inline bool read_topcom_triangulation_line(std::string_view line, std::size_t line_number,
                                            std::vector<std::array<std::size_t, 4>>& cells)
 {
   const auto assign = line.find(":=");
-  if(line.rfind("T[", 0) != 0 || assign == std::string::npos) return false;
+  if(line.substr(0, 2) != "T[" || assign == std::string_view::npos) return false;
   auto fail = [&](const std::string& what) {
     throw Input_error("TOPCOM output line " + std::to_string(line_number) + ": " + what);
   };
+  // One pass over the characters: a streamed enumeration reads millions of these lines.
+  const char* const begin = line.data();
+  const char* const end = begin + line.size();
+  const auto column = [&](const char* at) { return std::to_string(at - begin + 1); };
+  const auto separator = [](char ch) { return ch == ' ' || ch == ','; };
   cells.clear();
-  std::size_t pos = line.find('{', assign);
-  if(pos == std::string::npos) fail("no '{'");
-  ++pos;
+  const char* p = begin + assign;
+  while(p != end && *p != '{') ++p;
+  if(p == end) fail("no '{'");
+  ++p;
   for(;;)
   {
-    pos = line.find_first_not_of(" ,", pos);
-    if(pos == std::string::npos) fail("unterminated");
-    if(line[pos] == '}') break;
-    if(line[pos] != '{') fail("expected '{' at column " + std::to_string(pos + 1));
-    const std::size_t close = line.find('}', pos);
-    if(close == std::string::npos) fail("unterminated simplex");
+    while(p != end && separator(*p)) ++p;
+    if(p == end) fail("unterminated");
+    if(*p == '}') break;
+    if(*p != '{') fail("expected '{' at column " + column(p));
+    const char* close = p;
+    while(close != end && *close != '}') ++close;
+    if(close == end) fail("unterminated simplex");
     std::array<std::size_t, 4> cell{};
-    std::size_t count = 0, k = pos + 1;
-    while(k < close)
+    std::size_t count = 0;
+    for(const char* k = p + 1; k < close;)
     {
-      k = line.find_first_not_of(" ,", k);
-      if(k >= close) break;
+      while(k < close && separator(*k)) ++k;
+      if(k == close) break;
       // A point index: digits only (no sign), in range of std::size_t.
-      const std::size_t stop = std::min(close, line.find_first_of(" ,", k));
+      const char* stop = k;
+      while(stop < close && !separator(*stop)) ++stop;
       std::size_t value = 0;
-      const auto [ptr, ec] = std::from_chars(line.data() + k, line.data() + stop, value);
-      if(ec != std::errc() || ptr != line.data() + stop || line[k] == '-' || line[k] == '+')
-        fail("bad index at column " + std::to_string(k + 1));
+      const auto [ptr, ec] = std::from_chars(k, stop, value);
+      if(ec != std::errc() || ptr != stop || *k == '-' || *k == '+') fail("bad index at column " + column(k));
       if(count == 4) fail("a simplex with more than four points");
       cell[count++] = value;
       k = stop;
     }
     if(count != 4) fail("a simplex with " + std::to_string(count) + " points");
     cells.push_back(cell);
-    pos = close + 1;
+    p = close + 1;
   }
   return true;
 }

@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string>
+#include <string_view>
 #include <unistd.h>
 #include <vector>
 
@@ -98,8 +99,8 @@ std::size_t for_each_topcom_triangulation(const std::vector<Point>& points, std:
   bool stopped = false;
   for(ssize_t length; visited < limit && (length = ::getline(&pipe.buffer, &capacity, pipe.file)) >= 0;)
   {
-    std::string line(pipe.buffer, std::size_t(length));
-    if(!line.empty() && line.back() == '\n') line.pop_back();
+    std::string_view line(pipe.buffer, std::size_t(length));
+    if(!line.empty() && line.back() == '\n') line.remove_suffix(1);
     if(!read_topcom_triangulation_line(line, ++line_number, cells)) continue;
     if(!visit(visited++, cells))
     {
