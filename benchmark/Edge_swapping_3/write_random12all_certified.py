@@ -224,6 +224,9 @@ said "streamed"). Since stop 51 each loop is traced once, to where the helper's 
 its state first come back, not on a ladder of longer and longer traces (the same counts, with
 1.6 to 1.9 times less CPU time where measured, `conjectures.md`; a reading's file says how its
 loops were traced in a line of its own, and the pipeline column says which shards ran so).
+Shards 33 and later ran with stop 52's program (shard 34 from its seventh reading on), whose
+checker computes exact volumes in `Gmpzf` and whose trace lines are written by hand: the same
+files, 17% less CPU time where measured (`conjectures.md`).
 """)
     out.append("**Shards %s (%s starts: shard I is the blocks of 4096 numbered I modulo 64):**\n"
                "under each of the 36 readings, in each shard, the runs at the limit are the stream's in\n"
