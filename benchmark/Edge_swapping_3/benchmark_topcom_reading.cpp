@@ -36,32 +36,44 @@ int main(int argc, char** argv)
   namespace ES = CGAL::Edge_swapping_3;
   std::size_t n = 11;
   unsigned set = 1;
-  try
+  // A whole number, digits only: "12x" or "-1" is not read as 12 or as a huge set.
+  const auto number = [](const char* text, unsigned long& value) {
+    const std::string s = text;
+    if(s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+    value = std::stoul(s);
+    return true;
+  };
+  unsigned long n_arg = n, set_arg = set;
+  if(argc > 3 || (argc > 1 && !number(argv[1], n_arg)) || (argc > 2 && !number(argv[2], set_arg)) || n_arg < 5 ||
+     n_arg > 14)
   {
-    if(argc > 1) n = std::stoul(argv[1]);
-    if(argc > 2) set = unsigned(std::stoul(argv[2]));
-  }
-  catch(const std::exception&)
-  {
-    std::cerr << "usage: benchmark_topcom_reading [N [SET]]\n";
+    std::cerr << "usage: benchmark_topcom_reading [N [SET]] (N from 5 to 14, SET a whole number)\n";
     return 2;
   }
-  if(argc > 3 || n < 5 || n > 14)
-  {
-    std::cerr << "usage: benchmark_topcom_reading [N [SET]] (N from 5 to 14)\n";
-    return 2;
-  }
+  n = n_arg;
+  set = unsigned(set_arg);
   const auto points = ES::point_families::random_integer<K::Point_3>(n, set);
   const double self0 = cpu_seconds(RUSAGE_SELF), topcom0 = cpu_seconds(RUSAGE_CHILDREN);
-  std::size_t cells = 0;
-  const std::size_t triangulations = ES::IO::for_each_topcom_triangulation(
-    points, std::size_t(-1), [&](std::size_t, const std::vector<std::array<std::size_t, 4>>& t) {
-      cells += t.size();
-      return true;
-    });
+  std::size_t cells = 0, triangulations = 0;
+  try
+  {
+    triangulations = ES::IO::for_each_topcom_triangulation(
+      points, std::size_t(-1), [&](std::size_t, const std::vector<std::array<std::size_t, 4>>& t) {
+        cells += t.size();
+        return true;
+      });
+  }
+  catch(const std::exception& e) // TOPCOM missing or failing, or a line it printed that is not a triangulation
+  {
+    std::cerr << "benchmark_topcom_reading: " << e.what() << '\n';
+    return 1;
+  }
   const double reading = cpu_seconds(RUSAGE_SELF) - self0, topcom = cpu_seconds(RUSAGE_CHILDREN) - topcom0;
   std::printf("%zu random integer points, set %u: %zu triangulations, %zu cells\n", n, set, triangulations, cells);
-  std::printf("TOPCOM's enumeration: %.2f CPU s; reading its list: %.2f CPU s (%.3f of TOPCOM's; %.0f triangulations a second)\n",
-              topcom, reading, reading / topcom, reading > 0 ? double(triangulations) / reading : 0.0);
+  std::printf("TOPCOM's enumeration: %.2f CPU s; reading its list: %.2f CPU s", topcom, reading);
+  // Too few points for the clock: no ratio rather than a division by zero.
+  if(topcom > 0 && reading > 0)
+    std::printf(" (%.3f of TOPCOM's; %.0f triangulations a second)", reading / topcom, double(triangulations) / reading);
+  std::printf("\n");
   return 0;
 }
