@@ -68,6 +68,7 @@
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
 #include "adversarial_search.h"
+#include "laboratory_arguments.h"
 #include "effective_visit_search.h"
 #include "tag_bound_closure.h"
 #include <algorithm>
@@ -231,9 +232,7 @@ int scan_for_traps(const std::vector<K::Point_3>& points, const std::vector<Cell
   return 0;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+int run(int argc, char** argv)
 {
   const std::string flag = argc > 1 ? argv[1] : "";
   const bool reduce = flag == "--reduce", effective = flag == "--effective", tag_bounds = flag == "--tag-bounds",
@@ -270,50 +269,23 @@ int main(int argc, char** argv)
                  "       experiment_adversarial_orders --delaunay-first SOURCE READING [TRACE]\n";
     return 2;
   }
-  // A whole number up to `most`, or false (not digits, or too large).
-  auto whole_number = [](const std::string& text, std::size_t& value,
-                         std::size_t most = std::numeric_limits<std::size_t>::max()) {
-    if(text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
-    try
-    {
-      value = std::stoul(text);
-    }
-    catch(const std::out_of_range&)
-    {
-      return false;
-    }
-    return value <= most;
-  };
-  const std::size_t most_seed = std::numeric_limits<unsigned>::max();
+  using laboratory_arguments::whole_number;
   const std::string source = argv[1];
   std::vector<K::Point_3> points;
   std::vector<Cell_list> starts;
-  std::vector<std::string> part(1);
-  for(char ch : source)
-    if(ch == ':') part.emplace_back();
-    else part.back() += ch;
-  std::size_t n = 0, seed = 0;
-  if(part[0] == "random-integer" && part.size() == 3 && whole_number(part[1], n) && whole_number(part[2], seed, most_seed))
-    points = ES::point_families::random_integer<K::Point_3>(n, unsigned(seed));
-  else if(part[0] == "family" && part.size() == 4 && whole_number(part[2], n) && whole_number(part[3], seed, most_seed))
+  try
   {
-    try
+    if(!laboratory_arguments::named_point_set(source, points))
     {
-      points = ES::make_point_family<K::Point_3>(part[1], n, unsigned(seed));
-    }
-    catch(const std::invalid_argument& e) // an unknown family
-    {
-      std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
-      return 2;
-    }
-  }
-  else if(source.size() > 5 && source.compare(source.size() - 5, 5, ".json") == 0)
-  {
-    // topcom:CASE.json takes the points only; CASE.json its start as well.
-    const bool all_triangulations = source.rfind("topcom:", 0) == 0;
-    const std::string file = all_triangulations ? source.substr(7) : source;
-    try
-    {
+      if(source.size() <= 5 || source.compare(source.size() - 5, 5, ".json") != 0)
+      {
+        std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET, family:NAME:N:SEED, a case file "
+                     "(.json) or topcom:CASE.json\n";
+        return 2;
+      }
+      // topcom:CASE.json takes the points only; CASE.json its start as well.
+      const bool all_triangulations = source.rfind("topcom:", 0) == 0;
+      const std::string file = all_triangulations ? source.substr(7) : source;
       const ES::Conjecture_case<K::Point_3> c = ES::IO::read_conjecture_case_file<K::Point_3>(file);
       points = c.points;
       if(!all_triangulations)
@@ -322,16 +294,11 @@ int main(int argc, char** argv)
         starts.push_back(c.cells);
       }
     }
-    catch(const std::exception& e) // the reader's messages name the file
-    {
-      std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
-      return 2;
-    }
   }
-  else
+  catch(const std::exception& e) // a malformed name, an unknown family, points that cannot be triangulated; the
+                                 // reader's messages name the file
   {
-    std::cerr << "experiment_adversarial_orders: SOURCE is random-integer:N:SET, family:NAME:N:SEED, a case file (.json) "
-                 "or topcom:CASE.json\n";
+    std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
     return 2;
   }
   std::vector<ES::Helper_reading> readings;
@@ -493,4 +460,19 @@ int main(int argc, char** argv)
   }
   if(argc == 5 && !best_trace.empty()) std::ofstream(argv[4]) << best_trace;
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    return run(argc, argv);
+  }
+  catch(const std::exception& e) // TOPCOM failing, or a file that cannot be written
+  {
+    std::cerr << "experiment_adversarial_orders: " << e.what() << '\n';
+    return 2;
+  }
 }

@@ -32,7 +32,8 @@
 //
 // CASE is a case file (its points are used), random-integer:N:SET for the
 // laboratory's N random integer points of set SET, or family:NAME:N:SEED for
-// any family of point_families.h (the degenerate sets among them).
+// any family of point_families.h (the degenerate sets among them); N is from
+// 4 to 10^8 (laboratory_arguments.h).
 //
 // READING names a reading of Algorithm 4 (Helper_reading.h), for example
 // "cleared-each-cycle,any-tetrahedron,no-swap", or several separated by
@@ -67,10 +68,12 @@
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
 #include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
+#include "laboratory_arguments.h"
 #include "trace_checker.h"
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <limits>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -160,23 +163,20 @@ int run(int argc, char** argv)
     std::cerr << usage;
     return 2;
   }
-  unsigned first_seed = 1, last_seed = 0;
-  std::size_t max_cycles = 0;
-  try
+  // SEEDS is LAST or FIRST-LAST, each at most 2^32 - 1.
+  using laboratory_arguments::whole_number;
+  const std::string seeds = argv[2];
+  const auto dash = seeds.find('-');
+  std::size_t first_seed = 1, last_seed = 0, max_cycles = 0;
+  const std::size_t most_seed = std::numeric_limits<unsigned>::max();
+  const bool seeds_ok = (dash == std::string::npos || whole_number(seeds.substr(0, dash), first_seed, most_seed)) &&
+                        whole_number(seeds.substr(dash == std::string::npos ? 0 : dash + 1), last_seed, most_seed) &&
+                        first_seed <= last_seed;
+  if(!seeds_ok || !whole_number(argv[3], max_cycles) || max_cycles == 0)
   {
-    const std::string seeds = argv[2];
-    const auto dash = seeds.find('-');
-    if(dash != std::string::npos) first_seed = unsigned(std::stoul(seeds.substr(0, dash)));
-    last_seed = unsigned(std::stoul(dash == std::string::npos ? seeds : seeds.substr(dash + 1)));
-    max_cycles = std::stoul(argv[3]);
-  }
-  catch(const std::exception&)
-  {
-    max_cycles = 0;
-  }
-  if(max_cycles == 0 || first_seed > last_seed)
-  {
-    std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST and MAX_CYCLES a positive number\n";
+    std::cerr << "experiment_priority_loops: SEEDS is LAST or FIRST-LAST (FIRST <= LAST <= 4294967295) and "
+                 "MAX_CYCLES a whole number above 0, not '"
+              << seeds << "' and '" << argv[3] << "'\n";
     return 2;
   }
   if(trace_limit == 0) trace_limit = max_cycles > std::size_t(-1) / 8 ? max_cycles : 8 * max_cycles;
@@ -209,43 +209,7 @@ int run(int argc, char** argv)
   }
   ES::Conjecture_case<K::Point_3> c;
   const std::string source = argv[1];
-  if(source.rfind("random-integer:", 0) == 0)
-  {
-    const auto colon = source.find(':', 15);
-    try
-    {
-      c.points = ES::point_families::random_integer<K::Point_3>(std::stoul(source.substr(15, colon - 15)),
-                                                                unsigned(std::stoul(source.substr(colon + 1))));
-    }
-    catch(const std::invalid_argument&)
-    {
-      std::cerr << "experiment_priority_loops: random-integer:N:SET, with numbers N and SET\n";
-      return 2;
-    }
-  }
-  else if(source.rfind("family:", 0) == 0)
-  {
-    std::vector<std::string> part(1);
-    for(char ch : source.substr(7))
-      if(ch == ':') part.emplace_back();
-      else part.back() += ch;
-    std::size_t n = 0, seed = 0;
-    try
-    {
-      if(part.size() == 3) n = std::stoul(part[1]), seed = std::stoul(part[2]);
-    }
-    catch(const std::invalid_argument&)
-    {
-      part.clear();
-    }
-    if(part.size() != 3)
-    {
-      std::cerr << "experiment_priority_loops: family:NAME:N:SEED, with numbers N and SEED\n";
-      return 2;
-    }
-    c.points = ES::make_point_family<K::Point_3>(part[0], n, unsigned(seed));
-  }
-  else
+  if(!laboratory_arguments::named_point_set(source, c.points))
     c = ES::IO::read_conjecture_case_file<K::Point_3>(source);
   const auto in_shard = [&](std::size_t t) { return (t / batch) % shards == shard; };
   // The shard's starts, held when there are at most hold_limit (one TOPCOM enumeration for every
@@ -317,8 +281,9 @@ int run(int argc, char** argv)
     // loop found, or that trace certified none).
     std::size_t driver_loops = 0, first_trace = 0, whole_traces = 0;
     std::size_t fewest_swaps = 0, fewest_seed = 0, fewest_start = 0, loops_seen = 0; // the loop with the fewest swaps
-    for(unsigned seed = first_seed; seed <= last_seed; ++seed)
+    for(std::size_t seed_number = first_seed; seed_number <= last_seed; ++seed_number)
     {
+      const unsigned seed = unsigned(seed_number);
       std::size_t limit = 0, stuck = 0, certified = 0;
       long long first = -1;
       for_each_start([&](std::size_t t, const std::vector<std::array<std::size_t, 4>>& cells) {

@@ -111,6 +111,17 @@ done
 status=0
 "$EXPERIMENT_PRIORITY_LOOPS" "$fixture" 1-20 200 no-such-reading 2> /dev/null || status=$?
 [ $status = 2 ] || fail "an unknown reading: exit $status, not 2"
+# Bad point-set names, SEEDS and MAX_CYCLES: exit 2 with a message naming the problem.
+for bad in "random-integer:3:1 1 200|N is from 4 to 100000000" "random-integer:8x:1 1 200|is not random-integer:N:SET" \
+           "random-integer:-5:1 1 200|is not random-integer:N:SET" "family:grid-2x2x3:12 1 200|is not family:NAME:N:SEED" \
+           "family:nosuch:8:1 1 200|unknown point family 'nosuch'" "$fixture 12x 200|SEEDS is LAST or FIRST-LAST" \
+           "$fixture -1 200|SEEDS is LAST" "$fixture 2-1 200|SEEDS is LAST" "$fixture 1-4294967296 200|SEEDS is LAST" \
+           "$fixture 1 0|MAX_CYCLES a whole number above 0" "$fixture 1 -3|MAX_CYCLES a whole number"; do
+  status=0
+  # shellcheck disable=SC2086 # CASE SEEDS MAX_CYCLES, split
+  "$EXPERIMENT_PRIORITY_LOOPS" ${bad%%|*} > /dev/null 2> "$work/error.txt" || status=$?
+  [ $status = 2 ] && grep -qF -- "${bad#*|}" "$work/error.txt" || fail "${bad%%|*}: exit $status, $(cat "$work/error.txt")"
+done
 
 # A priority per start: every run at the limit a certified loop, as many per reading as
 # edge_swap experiment leaves at the limit with the same seeds per start.

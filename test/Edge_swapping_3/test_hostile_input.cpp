@@ -156,6 +156,45 @@ TEST_CASE("Defect 4: a results file is checked, line by line, before anything is
   }
 }
 
+TEST_CASE("Large point families: distinct integer points drawn in n log n and the smallest sphere as defined", "[hostile]")
+{
+  namespace pf = CGAL::Edge_swapping_3::point_families;
+  // A point drawn again is looked up in a set, not in the points so far: a million
+  // points are drawn here, which took about 40 minutes when the lookup was linear.
+  for(const std::string name : {"random-integer", "planes"})
+  {
+    INFO(name << ", seed 1");
+    std::vector<Point> p = ES::make_point_family<Point>(name, 1000000, 1);
+    REQUIRE(p.size() == 1000000);
+    REQUIRE(std::all_of(p.begin(), p.end(), [](const Point& q) { return q.x() >= 0 && q.y() >= 0 && q.z() >= 0; }));
+    std::sort(p.begin(), p.end());
+    REQUIRE(std::adjacent_find(p.begin(), p.end()) == p.end());
+  }
+  // The sphere of `cospherical_subset` is the smallest r2 >= 3 with at least max(n, 8) integer
+  // points, counted here point by point in the cube about each sphere.
+  const auto points_on = [](long r2) {
+    std::size_t count = 0;
+    const long r = long(std::sqrt(double(r2))) + 1;
+    for(long x = -r; x <= r; ++x)
+      for(long y = -r; y <= r; ++y)
+        for(long z = -r; z <= r; ++z) count += x * x + y * y + z * z == r2;
+    return count;
+  };
+  long r2 = 3;
+  for(std::size_t n = 8; n <= 400; ++n)
+  {
+    while(points_on(r2) < n) ++r2;
+    INFO(n << " points");
+    REQUIRE(pf::smallest_sphere_with(n) == r2);
+    REQUIRE(pf::cospherical<Point>(r2).size() == points_on(r2));
+  }
+  const auto big = pf::cospherical_subset<Point>(pf::cospherical_max_points, 1);
+  REQUIRE(big.size() == 20000);
+  REQUIRE(std::all_of(big.begin(), big.end(),
+                      [](const Point& q) { return q.x() * q.x() + q.y() * q.y() + q.z() * q.z() == 644474; }));
+  REQUIRE_THROWS_WITH(pf::cospherical_subset<Point>(20001, 1), Catch::Contains("at most 20000 points"));
+}
+
 TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hostile]")
 {
   Workdir w;
@@ -165,6 +204,11 @@ TEST_CASE("Defect 5: built-in families go through the point-set checks", "[hosti
   require_clean_rejection(w, "experiment --sizes 200000000 -o " + w.path("r.jsonl"), "a size is from 4 to 100000000", {});
   require_clean_rejection(w, "experiment --families random-integer --sizes 100 --starts topcom -o " + w.path("r.jsonl"),
                   "--starts topcom takes at most 20 points", {});
+  // Integer points of one sphere: the sphere for many more than 20,000 would not be found.
+  require_clean_rejection(w, "experiment --families cospherical --sizes 20001 -o " + w.path("r.jsonl"),
+                          "cospherical: at most 20000 points (the integer points of one sphere), not 20001", {});
+  require_clean_rejection(w, "experiment --families two-spheres --sizes 1000000 -o " + w.path("r.jsonl"),
+                          "two-spheres: at most 40000 points (those of two spheres), not 1000000", {});
   // The same checks in the runner itself, whatever calls it.
   ES::Conjecture_case<Point> c;
   c.points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};

@@ -93,6 +93,15 @@ for value in 3/3 1/0 x 1 "" "0/2 extra"; do
   "$program" --traps random-integer:7:3 until-destroyed,pass-over,no-swap 100 --shard $value > /dev/null 2>&1 || status=$?
   [ "$status" = 2 ] || fail "--shard '$value': exit $status, not 2"
 done
+# Bad point-set names: exit 2 with a message naming the problem (laboratory_arguments.h).
+for bad in "random-integer:3:1|N is from 4 to 100000000" "random-integer:7x:1|is not random-integer:N:SET" \
+           "random-integer:-5:1|is not random-integer:N:SET" "random-integer:7:4294967296|at most 4294967295" \
+           "family:nosuch:7:1|unknown point family 'nosuch'" "family:cospherical:20001:1|at most 20000 points" \
+           "nosuch|SOURCE is random-integer:N:SET"; do
+  status=0
+  "$program" --traps "${bad%%|*}" until-destroyed,pass-over,no-swap 100 > /dev/null 2> "$work/error.txt" || status=$?
+  [ "$status" = 2 ] && grep -qF "${bad#*|}" "$work/error.txt" || fail "${bad%%|*}: exit $status, $(cat "$work/error.txt")"
+done
 
 # Bad starts: exit 2, a message naming the file, no certificate.
 python3 - "$trap" "$work" <<'EOF'

@@ -9,6 +9,7 @@
 #include <CGAL/Random.h>
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -79,26 +80,63 @@ std::vector<Point> jittered_grid(int k, double amount, unsigned seed)
   return p;
 }
 
-/// Integer points exactly on the sphere x^2 + y^2 + z^2 = r2: all cospherical.
+/// Integer points exactly on the sphere x^2 + y^2 + z^2 = r2: all cospherical,
+/// ordered by x, then y, then z.
 template <class Point>
-std::vector<Point> cospherical(int r2)
+std::vector<Point> cospherical(long r2)
 {
   std::vector<Point> p;
-  const int r = int(std::sqrt(double(r2))) + 1;
-  for(int x = -r; x <= r; ++x)
-    for(int y = -r; y <= r; ++y)
-      for(int z = -r; z <= r; ++z)
-        if(x * x + y * y + z * z == r2) p.emplace_back(x, y, z);
+  const long r = long(std::sqrt(double(r2))) + 1;
+  for(long x = -r; x <= r; ++x)
+    for(long y = -r; y <= r; ++y)
+    {
+      const long rest = r2 - x * x - y * y; // z^2
+      if(rest < 0) continue;
+      long z = long(std::sqrt(double(rest)));
+      while(z * z > rest) --z;
+      while((z + 1) * (z + 1) <= rest) ++z;
+      if(z * z != rest) continue;
+      if(z > 0) p.emplace_back(int(x), int(y), int(-z));
+      p.emplace_back(int(x), int(y), int(z));
+    }
   return p;
 }
 
+/// The most points `cospherical_subset` gives. The sphere for 20,000 has
+/// r2 = 644,474 and is found in about 2 s; the points of a sphere grow only as
+/// the root of r2 on average, so many more would not be found in reasonable time.
+constexpr std::size_t cospherical_max_points = 20000;
+
+/// The smallest r2 >= 3 whose sphere x^2 + y^2 + z^2 = r2 has at least `n`
+/// integer points.
+inline long smallest_sphere_with(std::size_t n)
+{
+  // Every sphere up to `most` counted in one pass over the ball's points with
+  // x, y, z >= 0 (each stands for its sign changes), `most` doubled until one
+  // has n: not a search of the cube for each sphere.
+  for(long most = 64;; most *= 2)
+  {
+    std::vector<std::size_t> count(std::size_t(most) + 1, 0);
+    for(long x = 0; x * x <= most; ++x)
+      for(long y = 0; x * x + y * y <= most; ++y)
+        for(long z = 0; x * x + y * y + z * z <= most; ++z)
+          count[std::size_t(x * x + y * y + z * z)] += (x > 0 ? 2 : 1) * (y > 0 ? 2 : 1) * (z > 0 ? 2 : 1);
+    for(long r2 = 3; r2 <= most; ++r2)
+      if(count[std::size_t(r2)] >= n) return r2;
+  }
+}
+
 /// `n` of the integer points of the smallest sphere about the origin that has
-/// at least `n` (and is not flat), drawn from `seed`: exactly cospherical.
+/// at least `n` and at least 8 (so not flat), drawn from `seed`: exactly
+/// cospherical. Throws `std::invalid_argument` for more than
+/// `cospherical_max_points`.
 template <class Point>
 std::vector<Point> cospherical_subset(std::size_t n, unsigned seed)
 {
-  std::vector<Point> p;
-  for(int r2 = 3; p.size() < std::max<std::size_t>(n, 8); ++r2) p = cospherical<Point>(r2);
+  if(n > cospherical_max_points)
+    throw std::invalid_argument("cospherical: at most " + std::to_string(cospherical_max_points) +
+                                " points (the integer points of one sphere), not " + std::to_string(n));
+  std::vector<Point> p = cospherical<Point>(smallest_sphere_with(std::max<std::size_t>(n, 8)));
   CGAL::Random r(seed);
   for(std::size_t k = 0; k < n; ++k) std::swap(p[k], p[k + std::size_t(r.get_int(0, int(p.size() - k)))]);
   p.resize(n);
@@ -108,6 +146,9 @@ std::vector<Point> cospherical_subset(std::size_t n, unsigned seed)
 template <class Point>
 std::vector<Point> two_concentric_spheres(std::size_t n, unsigned seed)
 {
+  if(n > 2 * cospherical_max_points)
+    throw std::invalid_argument("two-spheres: at most " + std::to_string(2 * cospherical_max_points) +
+                                " points (those of two spheres), not " + std::to_string(n));
   std::vector<Point> p = cospherical_subset<Point>(n / 2, seed);
   for(const Point& q : cospherical_subset<Point>(n - n / 2, seed + 1)) p.emplace_back(3 * q.x(), 3 * q.y(), 3 * q.z());
   return p;
@@ -119,11 +160,12 @@ std::vector<Point> on_planes(std::size_t n, int planes, unsigned seed)
 {
   CGAL::Random r(seed);
   std::vector<Point> p;
+  std::set<Point> drawn; // a point drawn again is skipped, in time n log n
   const int side = std::max(20, 2 + int(std::sqrt(double(n))));
   while(p.size() < n)
   {
     Point q(r.get_int(0, side), r.get_int(0, side), r.get_int(0, planes));
-    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
+    if(drawn.insert(q).second) p.push_back(q);
   }
   return p;
 }
@@ -161,10 +203,11 @@ std::vector<Point> random_integer(std::size_t n, unsigned seed)
 {
   CGAL::Random r(seed);
   std::vector<Point> p;
+  std::set<Point> drawn; // a point drawn again is skipped, in time n log n
   while(p.size() < n)
   {
     Point q(r.get_int(0, 1001), r.get_int(0, 1001), r.get_int(0, 1001));
-    if(std::find(p.begin(), p.end(), q) == p.end()) p.push_back(q);
+    if(drawn.insert(q).second) p.push_back(q);
   }
   return p;
 }
