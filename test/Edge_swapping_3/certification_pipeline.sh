@@ -188,6 +188,30 @@ PY
     fail "stream shard: not 36 readings agreeing on 86 runs at the limit"
   grep -qF '| `until-destroyed,any-tetrahedron,no-swap` | 48 | 10 | 48 | 10 | 10 | 0 | yes |' "$work/against.md" ||
     fail "stream shard: until-destroyed,any-tetrahedron,no-swap is not 48 runs, 10 at the limit, 10 loops"
+  # The same shard as one task of a job array (stream_and_certify_shard.sh): the same table, also
+  # from the compressed tallies it keeps; run again, nothing is run again; bad arguments: exit 2
+  # and no OUTDIR.
+  task=$source_dir/benchmark/Edge_swapping_3/stream_and_certify_shard.sh
+  EDGE_SWAP=$edge_swap bash "$task" "$work/task" random-integer:8:1 1 3 16 > "$work/task.txt" ||
+    fail "stream_and_certify_shard.sh: exit $?"
+  cmp -s "$work/task/against.md" "$work/against.md" || fail "the task's table differs from the shard's"
+  grep -qx "36 of 36 readings agree; the stream has 86 fixed-order runs at the limit" "$work/task.txt" ||
+    fail "the task does not say that the 36 readings agree"
+  python3 "$against" --stream "$work/task/stream.jsonl.xz" --certified "$work/task/certified" |
+    cmp -s - "$work/against.md" || fail "the task's kept tallies give another table"
+  before="$(stat -c %Y "$work/task/stream.jsonl") $(wc -l < "$work/task/certified/progress.txt")"
+  EDGE_SWAP=/nonexistent bash "$task" "$work/task" random-integer:8:1 1 3 16 > /dev/null ||
+    fail "stream_and_certify_shard.sh run again: exit $?"
+  [ "$(stat -c %Y "$work/task/stream.jsonl") $(wc -l < "$work/task/certified/progress.txt")" = "$before" ] ||
+    fail "a task done ran again"
+  for bad in "random-integer:8:1 3 3" "random-integer:8:1 x 3" "random-integer:8:1 1 3 0" "random-integer:8 1 3" \
+             "family:grid-2x2x3:12 1 3" "family:nosuch:8:1 1 3" "random-integer:3:1 1 3" "random-integer:8:1 1"; do
+    status=0
+    # shellcheck disable=SC2086 # SET I N [BATCH], split
+    EDGE_SWAP=$edge_swap bash "$task" "$work/task_bad" $bad > /dev/null 2> "$work/task_bad.txt" || status=$?
+    [ $status = 2 ] && [ -s "$work/task_bad.txt" ] && [ ! -e "$work/task_bad" ] ||
+      fail "stream_and_certify_shard.sh $bad: exit $status, not 2 with a message and no OUTDIR"
+  done
   # The whole stream, its batches numbered 1 modulo 3 (--batches 1/3): the same table as the
   # shard's own stream. Another shard of it differs (exit 1); a shard's stream, or a --batches
   # that is not I/N with I < N, is refused (exit 2).
