@@ -73,8 +73,8 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
