@@ -263,11 +263,18 @@ files, 17% less CPU time where measured (`conjectures.md`).
     out.append("The shards added up (`summarize_certified_loops.py` on the directories):\n")
     out.append(summary_table(shards))
     out.append("")
-    out.append("The stream's other %d shards are left. At the median time of the %d shards run by the "
-               "current pipeline (one trace a loop; %s s, shards %s, beside other jobs), that is about %d core-hours; to spread "
-               "them, a Slurm array (`s=${SLURM_ARRAY_TASK_ID}` in the commands above).\n" % (
-                   left, len(current), format(int(median), ","), ranges([s.index for s in current]),
-                   round(left * median / 3600)))
+    if left:
+        out.append("The stream's other %d shards are left. At the median time of the %d shards run by the "
+                   "current pipeline (one trace a loop; %s s, shards %s, beside other jobs), that is about %d core-hours; to spread "
+                   "them, a Slurm array (`s=${SLURM_ARRAY_TASK_ID}` in the commands above).\n" % (
+                       left, len(current), format(int(median), ","), ranges([s.index for s in current]),
+                       round(left * median / 3600)))
+    else:
+        out.append("All %d shards of the stream are certified: every fine triangulation of set 1 (%s), under "
+                   "each of the 36 readings. Their times add up to %d core-hours, on the pipelines of the table and beside "
+                   "other jobs; the %d shards of the current pipeline took %s s at the median (shards %s).\n" % (
+                       SHARDS, format(starts, ","), round(sum(s.seconds for s in shards) / 3600), len(current),
+                       format(int(median), ","), ranges([s.index for s in current])))
     return "\n".join(out), runs, limit, all_stops, starts
 
 
