@@ -334,10 +334,11 @@ def main(check):
     small, rest = min(fewest), sorted(v for v in fewest if v != min(fewest))
     new_conjectures = replace_once(
         new_conjectures, r"and under all 36 readings on random12all's shards .*?`results/random12_certified_loops.md`\)",
-        "and under all 36 readings on random12all's shards %s of 64 (%s starts of set 1; %s runs at the limit, all "
+        "and under all 36 readings on random12all's shards %s of 64 (%s of set 1; %s runs at the limit, all "
         "loops, the stream's counts reading by reading; the fewest of %d swaps under %d readings, %d to %d under the "
         "others; stops %s, `results/random12_certified_loops.md`)" % (
-            indices, format(starts, ","), format(limit, ","), small, fewest[small], rest[0],
+            indices, ("all %s starts" if len(shards) == SHARDS else "%s starts") % format(starts, ","),
+            format(limit, ","), small, fewest[small], rest[0],
             rest[-1], stops_text(stops)), "fixed-order statement")
     if check:
         return check_files(((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures)))
