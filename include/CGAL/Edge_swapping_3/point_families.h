@@ -264,8 +264,9 @@ inline std::vector<std::string> point_family_names()
 }
 
 /// The family `name` with about `n` points (grids: the nearest k x k x k;
-/// cube, octahedron and the fixed grids: their own size), drawn from `seed`. Throws for an
-/// unknown name.
+/// cube, octahedron and the fixed grids: their own size), drawn from `seed`. Throws
+/// `std::invalid_argument` for an unknown name, and for more points than `cospherical`
+/// (`cospherical_max_points`) or `two-spheres` (twice that) give.
 template <class Point>
 std::vector<Point> make_point_family(const std::string& name, std::size_t n, unsigned seed)
 {
