@@ -159,9 +159,8 @@ TEST_CASE("Defect 4: a results file is checked, line by line, before anything is
 TEST_CASE("Large point families: distinct integer points drawn in n log n and the smallest sphere as defined", "[hostile]")
 {
   namespace pf = CGAL::Edge_swapping_3::point_families;
-  // A point drawn again is looked up in a set, not in the points so far: a million
-  // points are drawn here; with the linear lookup 10^5 took 7.7 s, and the time grew
-  // as their number squared.
+  // A point drawn again is looked up in a set, not in the points so far (a linear
+  // lookup made the draw take time n^2): a million points are drawn here.
   for(const std::string name : {"random-integer", "planes"})
   {
     INFO(name << ", seed 1");

@@ -103,8 +103,8 @@ std::vector<Point> cospherical(long r2)
 }
 
 /// The most points `cospherical_subset` gives. The sphere for 20,000 has
-/// r2 = 644,474 and is found in about 2 s; the points of a sphere grow only as
-/// the root of r2 on average, so many more would not be found in reasonable time.
+/// r2 = 644,474; the points of a sphere grow only as the root of r2 on average,
+/// so the sphere for many more would not be found in reasonable time.
 constexpr std::size_t cospherical_max_points = 20000;
 
 /// The smallest r2 >= 3 whose sphere x^2 + y^2 + z^2 = r2 has at least `n`
