@@ -14,9 +14,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Edge_swapping_3/point_families.h>
+#include "laboratory_arguments.h"
 #include <sys/resource.h>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace {
@@ -34,25 +36,15 @@ int main(int argc, char** argv)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   namespace ES = CGAL::Edge_swapping_3;
-  std::size_t n = 11;
-  unsigned set = 1;
-  // A whole number, digits only: "12x" or "-1" is not read as 12 or as a huge set.
-  const auto number = [](const char* text, unsigned long& value) {
-    const std::string s = text;
-    if(s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
-    value = std::stoul(s);
-    return true;
-  };
-  unsigned long n_arg = n, set_arg = set;
-  if(argc > 3 || (argc > 1 && !number(argv[1], n_arg)) || (argc > 2 && !number(argv[2], set_arg)) || n_arg < 5 ||
-     n_arg > 14)
+  // Digits only (laboratory_arguments.h): "12x" or "-1" is not read as 12 or as a huge set.
+  std::size_t n = 11, set = 1;
+  if(argc > 3 || (argc > 1 && !laboratory_arguments::whole_number(argv[1], n, 14)) ||
+     (argc > 2 && !laboratory_arguments::whole_number(argv[2], set, std::numeric_limits<unsigned>::max())) || n < 5)
   {
-    std::cerr << "usage: benchmark_topcom_reading [N [SET]] (N from 5 to 14, SET a whole number)\n";
+    std::cerr << "usage: benchmark_topcom_reading [N [SET]] (N from 5 to 14, SET a whole number up to 4294967295)\n";
     return 2;
   }
-  n = n_arg;
-  set = unsigned(set_arg);
-  const auto points = ES::point_families::random_integer<K::Point_3>(n, set);
+  const auto points = ES::point_families::random_integer<K::Point_3>(n, unsigned(set));
   const double self0 = cpu_seconds(RUSAGE_SELF), topcom0 = cpu_seconds(RUSAGE_CHILDREN);
   std::size_t cells = 0, triangulations = 0;
   try
@@ -69,7 +61,7 @@ int main(int argc, char** argv)
     return 1;
   }
   const double reading = cpu_seconds(RUSAGE_SELF) - self0, topcom = cpu_seconds(RUSAGE_CHILDREN) - topcom0;
-  std::printf("%zu random integer points, set %u: %zu triangulations, %zu cells\n", n, set, triangulations, cells);
+  std::printf("%zu random integer points, set %zu: %zu triangulations, %zu cells\n", n, set, triangulations, cells);
   std::printf("TOPCOM's enumeration: %.2f CPU s; reading its list: %.2f CPU s", topcom, reading);
   // Too few points for the clock: no ratio rather than a division by zero.
   if(topcom > 0 && reading > 0)
