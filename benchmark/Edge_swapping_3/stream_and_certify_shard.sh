@@ -21,6 +21,7 @@
 #                      triangulation, and a tally line for each block
 #   stream.jsonl.xz    its first line and its tally lines, compressed: what
 #                      doc/Edge_swapping_3/results/random12all/ keeps of a shard
+#   stream.log         edge_swap's messages, each attempt's after the last
 #   certified/         one file per reading (certify_fixed_order_loops.sh)
 #   against.md         the comparison
 # Exit 0 when every reading of the stream is certified with the stream's runs and
@@ -66,14 +67,16 @@ made=0
 mkdir -p "$out"
 # 1. The stream (edge_swap checks the set and its options before it writes anything). A
 # finished stream is not resumed: that would have TOPCOM list the set again to find nothing left.
+# The log grows by each attempt (its last line gives the attempt's time).
 status=0
+logged=$(stat -c %s "$out/stream.log" 2> /dev/null || echo 0)
 grep -q '"complete":true' "$out/stream.jsonl" 2> /dev/null ||
   "$edge_swap" experiment -o "$out/stream.jsonl" --starts topcom --stream --stream-batch "$batch" \
     --shard "$shard/$shards" --max-cycles 200 --threads 1 --strategies plain,helper \
     --orders storage,random,priority --families "$family" --sizes "$size" --seeds "$seed" --readings all \
-    > "$out/stream.summary.txt" 2> "$out/stream.log" || status=$?
+    > "$out/stream.summary.txt" 2>> "$out/stream.log" || status=$?
 if [ $status != 0 ]; then
-  cat "$out/stream.log" >&2
+  tail -c +$((logged + 1)) "$out/stream.log" >&2
   if [ $made = 1 ] && [ ! -s "$out/stream.jsonl" ]; then rm -rf "$out"; fi
   exit 2
 fi

@@ -212,6 +212,23 @@ PY
     [ $status = 2 ] && [ -s "$work/task_bad.txt" ] && [ ! -e "$work/task_bad" ] ||
       fail "stream_and_certify_shard.sh $bad: exit $status, not 2 with a message and no OUTDIR"
   done
+  [ "$(grep -c ' instances in [0-9.]* s on 1 threads$' "$work/task/stream.log")" = 1 ] ||
+    fail "the task's stream.log does not give the stream's time once"
+  # Keeping a task for the docs (write_all_readings_certified.py): only a shard of 64 of the
+  # 12 random points of set 2 or 3 that agrees; else exit 2, a message, and nothing kept.
+  keep=$source_dir/benchmark/Edge_swapping_3/write_all_readings_certified.py
+  kept=$source_dir/doc/Edge_swapping_3/results/random12_set3_all_readings
+  kept_files() { if [ -d "$kept" ]; then find "$kept" | wc -l; else echo 0; fi; }
+  before=$(kept_files)
+  for bad in "3 --add $work/task" "3 --add $work/nonexistent" "3 --add" "4" "1" "3 --bogus" "" "3 --check --add"; do
+    status=0
+    # shellcheck disable=SC2086 # the arguments, split
+    python3 "$keep" $bad > /dev/null 2> "$work/keep_bad.txt" || status=$?
+    [ $status = 2 ] && [ -s "$work/keep_bad.txt" ] || fail "write_all_readings_certified.py $bad: exit $status, not 2"
+  done
+  grep -q "not a shard of 64 of random-integer|12|3" <(python3 "$keep" 3 --add "$work/task" 2>&1) ||
+    fail "write_all_readings_certified.py does not say that the 8-point task is not a shard of set 3"
+  [ "$(kept_files)" = "$before" ] || fail "a refused task was kept"
   # The whole stream, its batches numbered 1 modulo 3 (--batches 1/3): the same table as the
   # shard's own stream. Another shard of it differs (exit 1); a shard's stream, or a --batches
   # that is not I/N with I < N, is refused (exit 2).
