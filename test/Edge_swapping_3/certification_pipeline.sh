@@ -214,6 +214,26 @@ PY
   done
   [ "$(grep -c ' instances in [0-9.]* s on 1 threads$' "$work/task/stream.log")" = 1 ] ||
     fail "the task's stream.log does not give the stream's time once"
+  # Attempts that fail say their own messages alone (exit 2) and the log keeps every attempt's.
+  printf '#!/bin/sh
+echo "an attempt that failed" >&2
+exit 1
+' > "$work/failing_edge_swap"
+  chmod +x "$work/failing_edge_swap"
+  mkdir -p "$work/task_log"
+  for attempt in 1 2; do
+    status=0
+    EDGE_SWAP=$work/failing_edge_swap bash "$task" "$work/task_log" random-integer:8:1 1 3 16 > /dev/null \
+      2> "$work/task_log.txt" || status=$?
+    [ $status = 2 ] && [ "$(cat "$work/task_log.txt")" = "an attempt that failed" ] ||
+      fail "failed attempt $attempt: exit $status, not 2 with its own message alone"
+  done
+  EDGE_SWAP=$edge_swap bash "$task" "$work/task_log" random-integer:8:1 1 3 16 > /dev/null ||
+    fail "stream_and_certify_shard.sh after two failed attempts: exit $?"
+  [ "$(grep -c '^an attempt that failed$' "$work/task_log/stream.log")" = 2 ] &&
+    [ "$(grep -c ' instances in [0-9.]* s on 1 threads$' "$work/task_log/stream.log")" = 1 ] ||
+    fail "the log does not keep the three attempts"
+  cmp -s "$work/task_log/against.md" "$work/against.md" || fail "the task run after failed attempts differs"
   # Keeping a task for the docs (write_all_readings_certified.py): only a shard of 64 of the
   # 12 random points of set 2 or 3 that agrees; else exit 2, a message, and nothing kept.
   keep=$source_dir/benchmark/Edge_swapping_3/write_all_readings_certified.py
