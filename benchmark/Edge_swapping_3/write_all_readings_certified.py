@@ -253,23 +253,47 @@ with `--check`.
                                       total=total, fewest=fewest_text(by_fewest))
 
 
+def row_pattern(set_number):
+    return r"\| 12 random integer points, set %d, under all 36 readings, [^|]*\| all 36 \|[^\n]*" % set_number
+
+
+def clause_pattern(set_number):
+    return r"and under all 36 readings on set %d's shards? .*?`results/random12_set%d_all_readings\.md`\)" % (
+        set_number, set_number)
+
+
+def place(text, pattern, replacement, set_number, joint, what):
+    """Replace the set's part of conjectures.md; the first time, put it beside the other set's (2 before 3)."""
+    if re.search(pattern(set_number), text, flags=re.S):
+        return replace_once(text, pattern(set_number), replacement, what)
+    other = 5 - set_number
+    beside = list(re.finditer(pattern(other), text, flags=re.S))
+    if len(beside) != 1:
+        raise Disagree("conjectures.md has neither %s nor set %d's to put it beside" % (what, other))
+    m = beside[0]
+    if set_number < other:
+        return text[:m.start()] + replacement + joint + text[m.start():]
+    return text[:m.end()] + joint + replacement + text[m.end():]
+
+
 def conjectures_text(text, set_number, facts):
-    """The set's row of the certified table, its fixed-order phrase and its instance count."""
+    """The set's row of the certified table and its fixed-order phrase."""
     name, f = "`results/random12_set%d_all_readings.md`" % set_number, facts
     shards = "%s of 64" % shards_text(f["indices"])
-    text = replace_once(
-        text, r"\| 12 random integer points, set %d, under all 36 readings, [^|]*\| all 36 \|[^\n]*" % set_number,
+    text = place(
+        text, row_pattern,
         "| 12 random integer points, set %d, under all 36 readings, %s (%s; one task a shard, "
         "`stream_and_certify_shard.sh`) | all 36 | %s | %s | %s | 0 | %s s |" % (
             set_number, shards, stops_words(f["stops"]), format(36 * f["starts"], ","), format(f["limit"], ","),
-            format(f["limit"], ","), format(round(f["seconds"]), ",")), "set %d's certified row" % set_number)
-    text = replace_once(
-        text, r"and under all 36 readings on set %d's shards .*?%s\)" % (set_number, re.escape(name)),
+            format(f["limit"], ","), format(round(f["seconds"]), ",")),
+        set_number, "\n", "set %d's certified row" % set_number)
+    return place(
+        text, clause_pattern,
         "and under all 36 readings on set %d's %s (%s of its %s starts; %s runs at the limit, all loops, the "
         "stream's counts reading by reading; the fewest swaps in a loop %s; %s)" % (
             set_number, shards, format(f["starts"], ","), format(f["total"], ","), format(f["limit"], ","),
-            f["fewest"], name), "set %d's statement" % set_number)
-    return text
+            f["fewest"], name),
+        set_number, ", ", "set %d's statement" % set_number)
 
 
 def instance_count(text):
@@ -317,7 +341,11 @@ def main(argv):
     now = open(path).read() if os.path.exists(path) else None
     with open(CONJECTURES_MD) as f:
         conjectures = f.read()
-    new_conjectures = instance_count(conjectures_text(conjectures, set_number, facts))
+    try:
+        new_conjectures = instance_count(conjectures_text(conjectures, set_number, facts))
+    except Disagree as e:
+        sys.stderr.write("write_all_readings_certified.py: %s\n" % e)
+        return 2
     files = ((path, body + "\n", now), (CONJECTURES_MD, new_conjectures, conjectures))
     if "--check" in rest:
         return check_files(files)
