@@ -296,11 +296,12 @@ def conjectures_text(text, set_number, facts):
         set_number, ", ", "set %d's statement" % set_number)
 
 
-def instance_count(text):
-    """The sentence of conjectures.md that adds the sets' runs to the laboratory's instance count."""
+def instance_count(text, loaded):
+    """The sentence of conjectures.md that adds the sets' runs to the laboratory's instance count;
+    loaded: the kept shards already read, by set."""
     parts, total = [], INSTANCES_UP_TO_STOP_47
     for set_number in sorted(RANDOM12_STOP):
-        tasks = load_tasks(set_number)
+        tasks = loaded[set_number] if set_number in loaded else load_tasks(set_number)
         starts = sum(t.starts for t in tasks)
         if starts:
             total += (RUNS_A_START - REPEATED_A_START) * starts
@@ -342,7 +343,7 @@ def main(argv):
     with open(CONJECTURES_MD) as f:
         conjectures = f.read()
     try:
-        new_conjectures = instance_count(conjectures_text(conjectures, set_number, facts))
+        new_conjectures = instance_count(conjectures_text(conjectures, set_number, facts), {set_number: tasks})
     except Disagree as e:
         sys.stderr.write("write_all_readings_certified.py: %s\n" % e)
         return 2
