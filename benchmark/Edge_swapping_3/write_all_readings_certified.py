@@ -208,9 +208,10 @@ with `--check`.
     out.append("**%s of 64 (%s of the %s starts, %s runs):** under each of the 36 readings,\n"
                "in each shard, the runs at the limit are the stream's in number, and **every one of the %s\n"
                "fixed-order runs at the limit is a certified loop**. Times are wall seconds of one task on one\n"
-               "core of this 2-core machine, two tasks at a time beside the session's other work: the stream's\n"
-               "(the times its log gives, TOPCOM's listing included; an attempt cut before its end is not counted)\n"
-               "and the certification's (its progress lines).\n" % (
+               "core of this 2-core machine, two tasks at a time, beside whatever else that stop's session ran\n"
+               "(builds, tests, doc builds; several stops began on a new machine), so they compare best within\n"
+               "one stop: the stream's (the times its log gives, TOPCOM's listing included; an attempt cut\n"
+               "before its end is not counted) and the certification's (its progress lines).\n" % (
                    shards_text(indices).capitalize(), format(starts, ","), format(total, ","),
                    format(RUNS_A_START * starts, ","),
                    format(limit, ",")))
