@@ -41,7 +41,8 @@ STOP_STARTS = [(46, "2026-12-03T00:00:00Z"), (47, "2026-12-03T04:40:00Z"), (48, 
                (57, "2026-12-04T11:35:00Z"),
                (58, "2026-12-04T14:20:00Z"),
                (59, "2026-12-04T17:18:00Z"),
-               (60, "2026-12-04T20:15:00Z")]
+               (60, "2026-12-04T20:15:00Z"),
+               (61, "2026-12-04T23:15:00Z")]
 
 COUNTS = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
 FEWEST = re.compile(r"^fewest swaps in a certified loop: (\d+) ")
