@@ -96,6 +96,13 @@ def shards_text(indices):
     return ("shard %s" if len(indices) == 1 else "shards %s") % ranges(indices)
 
 
+def starts_words(starts, total, whose):
+    """all 1,298,487 starts, or 20,480 of its 1,298,487 starts (whose: "its" or "the")"""
+    if starts == total:
+        return "all %s starts" % format(total, ",")
+    return "%s of %s %s starts" % (format(starts, ","), whose, format(total, ","))
+
+
 def stops_words(stops):
     return ("stop %s" if len(stops) == 1 else "stops %s") % stops_text(stops)
 
@@ -205,14 +212,14 @@ agree with every run at the limit a certified loop; ctest `all_readings_certifie
 with `--check`.
 """ % (set_number, format(total, ","), set_number, RUNS_A_START, set_number, set_number, set_number,
        set_number, set_number, set_number))
-    out.append("**%s of 64 (%s of the %s starts, %s runs):** under each of the 36 readings,\n"
+    out.append("**%s of 64 (%s, %s runs):** under each of the 36 readings,\n"
                "in each shard, the runs at the limit are the stream's in number, and **every one of the %s\n"
                "fixed-order runs at the limit is a certified loop**. Times are wall seconds of one task on one\n"
                "core of this 2-core machine, two tasks at a time, beside whatever else that stop's session ran\n"
                "(builds, tests, doc builds; several stops began on a new machine), so they compare best within\n"
                "one stop: the stream's (the times its log gives, TOPCOM's listing included; an attempt cut\n"
                "before its end is not counted) and the certification's (its progress lines).\n" % (
-                   shards_text(indices).capitalize(), format(starts, ","), format(total, ","),
+                   shards_text(indices).capitalize(), starts_words(starts, total, "the"),
                    format(RUNS_A_START * starts, ","),
                    format(limit, ",")))
     out.append("| shard | starts | runs | fixed-order runs at the limit (36 readings) | certified loops "
@@ -290,9 +297,9 @@ def conjectures_text(text, set_number, facts):
         set_number, "\n", "set %d's certified row" % set_number)
     return place(
         text, clause_pattern,
-        "and under all 36 readings on set %d's %s (%s of its %s starts; %s runs at the limit, all loops, the "
+        "and under all 36 readings on set %d's %s (%s; %s runs at the limit, all loops, the "
         "stream's counts reading by reading; the fewest swaps in a loop %s; %s)" % (
-            set_number, shards, format(f["starts"], ","), format(f["total"], ","), format(f["limit"], ","),
+            set_number, shards, starts_words(f["starts"], f["total"], "its"), format(f["limit"], ","),
             f["fewest"], name),
         set_number, ", ", "set %d's statement" % set_number)
 

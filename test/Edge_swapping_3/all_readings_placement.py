@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """write_all_readings_certified.py puts a set's row and statement into conjectures.md the first
-time (set 2 before set 3), replaces them afterwards, and refuses a page that has neither set's."""
+time (set 2 before set 3), replaces them afterwards, says "all N starts" once every shard is in, and refuses a page that
+has neither set's."""
 import os
 import re
 import sys
@@ -43,6 +44,13 @@ def main():
     spans(second, 2)
     assert "set 2's shards 0 to 2 of 64 (61,440 of its" in second and "20,480 of its" not in second
 
+    # Once every shard is in, the statement says so.
+    whole = writer.conjectures_text(second, 2, facts(list(range(64)), 5563240))
+    spans(whole, 2)
+    assert "set 2's shards 0 to 63 of 64 (all 5,563,240 starts; 38,942,680 runs at the limit" in whole
+    assert writer.starts_words(5563240, 5563240, "the") == "all 5,563,240 starts"
+    assert writer.starts_words(20480, 5563240, "the") == "20,480 of the 5,563,240 starts"
+
     # Without set 3's parts, set 3's go after set 2's.
     lone = re.sub(writer.row_pattern(3) + "\n", "", second, flags=re.S)
     lone = re.sub(", " + writer.clause_pattern(3), "", lone, flags=re.S)
@@ -58,7 +66,7 @@ def main():
         assert "neither set 3's certified row nor set 2's" in str(e), e
     else:
         raise AssertionError("a page with neither set's row was accepted")
-    print("placement: set 2 before set 3, replaced once placed, refused with neither")
+    print("placement: set 2 before set 3, replaced once placed, whole once complete, refused with neither")
 
 
 if __name__ == "__main__":
