@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """write_all_readings_certified.py puts a set's row and statement into conjectures.md the first
-time (set 2 before set 3), replaces them afterwards, says "all N starts" once every shard is in, and refuses a page that
-has neither set's."""
+time (set 2 before set 3), replaces them afterwards, says "all N starts" once every shard is in,
+and refuses a page that has neither set's."""
 import os
 import re
 import sys
