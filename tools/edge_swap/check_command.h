@@ -7,10 +7,11 @@
 
 #include "mesh_files.h"
 #include <CGAL/Edge_swapping_3/Delaunay_comparison.h>
+#include <set>
 
 namespace edge_swap {
 
-/// 0: valid; 1: not a valid triangulation of the convex hull; read errors throw (2).
+/// 0: valid; 1: not a valid mesh; read errors throw (2).
 inline int run_check(const std::string& path)
 {
   const Input in = read_input(path);
@@ -21,6 +22,25 @@ inline int run_check(const std::string& path)
   {
     std::cout << path << ": invalid: " << problem << '\n';
     return 1;
+  }
+  if(ES::is_completed_domain(tr))
+  {
+    // A domain that is not its convex hull: valid as checked, once filled
+    // outside to a box and checked exactly as one triangulation of it.
+    std::size_t cells = 0, boundary = 0;
+    std::set<int> subdomains;
+    for(auto c : tr.finite_cell_handles())
+    {
+      if(c->info().subdomain == ES::Domain_cell_info::completion) continue;
+      ++cells;
+      subdomains.insert(c->info().subdomain);
+      for(int i = 0; i < 4; ++i) boundary += c->neighbor(i)->info().subdomain == ES::Domain_cell_info::completion;
+    }
+    std::cout << path << ": valid mesh of a domain that is not its convex hull (orientation, conformity, no overlap)\n"
+              << "  vertices " << in.points.size() << ", cells " << cells << ", boundary faces " << boundary
+              << ", subdomains " << subdomains.size() << '\n'
+              << "  not compared with CGAL's Delaunay triangulation, which covers the convex hull\n";
+    return 0;
   }
   // A valid triangulation of the convex hull whose every face is locally
   // Delaunay under CGAL's perturbation is the perturbed Delaunay

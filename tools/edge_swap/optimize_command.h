@@ -108,12 +108,20 @@ inline unsigned quality_operations(const std::string& list)
 /// is not given: the best combination measured (doc/Edge_swapping_3/benchmarks.md).
 constexpr const char* default_quality_operations = "all";
 
+/// The counts and extreme qualities of the mesh's domain.
+inline ES::Mesh_statistics domain_statistics(const Triangulation& tr, const Input& in)
+{
+  return ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
+    return ES::mesh_statistics(tr, ES::parameters::mesh_constraints(constraints));
+  });
+}
+
 /// The worst-first driver (`--operations`) on `tr`: runs, writes, reports.
 inline int run_worst_first(const Optimize_options& o, const Input& in, Triangulation& tr, unsigned operations)
 {
-  const std::size_t cells_before = tr.number_of_finite_cells();
+  const std::size_t cells_before = ES::number_of_mesh_cells(tr);
   namespace np = ES::parameters;
-  const ES::Quality_report report = ES::with_mesh_constraints(in, [&](const auto& constraints) {
+  const ES::Quality_report report = ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
     return with_criterion(o.criterion, [&](const auto& criterion) {
       if constexpr(!ES::Is_worst_tetrahedron_criterion<std::decay_t<decltype(criterion)>>::value)
         return ES::Quality_report(); // refused before any work
@@ -156,7 +164,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
             << " more in two steps), multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
             << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst "
-            << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; " << report.seconds << " s\n";
+            << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << ES::number_of_mesh_cells(tr) << "; " << report.seconds << " s\n";
   return 0;
 }
 
@@ -247,8 +255,8 @@ inline int run_optimize(const Optimize_options& o)
 
   // The full statistics (every dihedral angle) only when --stats asks for them.
   const bool with_statistics = !o.stats.empty();
-  const std::size_t cells_before = tr.number_of_finite_cells();
-  const ES::Mesh_statistics before = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
+  const std::size_t cells_before = ES::number_of_mesh_cells(tr);
+  const ES::Mesh_statistics before = with_statistics ? domain_statistics(tr, in) : ES::Mesh_statistics();
   namespace np = ES::parameters;
   const auto perturbation = (o.perturb == "cgal") ? ES::CGAL_PERTURBATION : ES::NO_PERTURBATION;
   const auto parameters = np::schedule(
@@ -263,7 +271,7 @@ inline int run_optimize(const Optimize_options& o)
   // A Medit mesh keeps its boundaries and subdomains; a point set or a
   // TetGen mesh is a triangulation of its convex hull, hull faces included.
   auto run = [&](const auto& parameters) {
-    return ES::with_mesh_constraints(in, [&](const auto& constraints) {
+    return ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
       if(o.helper) return CGAL::swap_edges_with_helper(tr, np::mesh_constraints(constraints, parameters));
       return with_criterion(o.criterion, [&](const auto& criterion) {
         return CGAL::swap_edges(tr, criterion, np::mesh_constraints(constraints, parameters));
@@ -286,7 +294,7 @@ inline int run_optimize(const Optimize_options& o)
   }
   else
     report = run(parameters);
-  const ES::Mesh_statistics after = with_statistics ? ES::mesh_statistics(tr) : ES::Mesh_statistics();
+  const ES::Mesh_statistics after = with_statistics ? domain_statistics(tr, in) : ES::Mesh_statistics();
   const bool repairs = !o.helper && !o.paper && o.criterion == "delaunay";
 
   Output_files files;
@@ -325,7 +333,7 @@ inline int run_optimize(const Optimize_options& o)
   const auto t = report.total_swaps();
   std::cout << (o.helper ? "helper" : o.criterion) << ": " << ES::swap_ending_name(report.ending) << " after "
             << report.number_of_cycles() << " rounds; swaps 2-3 " << t[0] << ", 3-2 " << t[1] << ", 2-2 "
-            << t[2] << ", 4-4 " << t[3] << "; cells " << cells_before << " -> " << tr.number_of_finite_cells() << "; "
+            << t[2] << ", 4-4 " << t[3] << "; cells " << cells_before << " -> " << ES::number_of_mesh_cells(tr) << "; "
             << report.seconds << " s\n";
   if(report.loop_period > 0)
     std::cout << "loop: the state after round " << report.loop_round << " is that after round "

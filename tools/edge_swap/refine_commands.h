@@ -59,7 +59,7 @@ inline int run_insert(const Insert_options& o)
   const IO::Node_file node = IO::read_node_file(o.points);
   std::size_t inserted = 0, existing = 0, refused = 0;
   std::array<std::size_t, ES::number_of_flip_kinds> swaps{};
-  ES::with_mesh_constraints(in, [&](const auto& constraints) {
+  ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
     return with_criterion(o.criterion, [&](const auto& criterion) {
       Triangulation::Cell_handle hint;
       for(const auto& q : node.points)
@@ -163,7 +163,7 @@ inline int run_refine(const Refine_options& o)
   if(o.by == "aspect-ratio") round_visitor = progress;
 
   ES::Refinement_report total;
-  ES::with_mesh_constraints(in, [&](const auto& constraints) {
+  ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
     namespace np = ES::parameters;
     const auto settings = np::new_vertex_visitor(new_vertex, np::round_visitor(round_visitor, np::mesh_constraints(constraints)));
     return with_criterion(o.criterion, [&](const auto& criterion) {
@@ -205,6 +205,20 @@ inline int run_refine(const Refine_options& o)
   return 0;
 }
 
+/// The counts of the cells of `tr` that the mesh read holds (its own, not
+/// those that complete its domain), and of their vertices, edges and faces.
+inline ES::Mesh_statistics domain_counts(const Triangulation& tr)
+{
+  struct Own_cells : ES::Domain_constraints
+  {
+    bool is_in_domain(const Triangulation& t, Triangulation::Cell_handle c) const
+    {
+      return !t.is_infinite(c) && c->info().subdomain != ES::Domain_cell_info::completion;
+    }
+  };
+  return ES::mesh_statistics(tr, ES::parameters::mesh_constraints(Own_cells()));
+}
+
 /// edge_swap stats: counts, extremes and histograms of dihedral angles and
 /// aspect ratios (over the cells of the domain), to standard output and, with
 /// `json`, to a file.
@@ -213,7 +227,7 @@ inline int run_stats(const std::string& path, const std::string& json)
   check_output_paths({json});
   Triangulation tr;
   const Input in = read_mesh(path, tr);
-  const ES::Quality_histograms h = ES::with_mesh_constraints(in, [&](const auto& constraints) {
+  const ES::Quality_histograms h = ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
     return ES::quality_histograms(tr, ES::parameters::mesh_constraints(constraints));
   });
   const std::size_t cells = h.cells;
@@ -225,8 +239,12 @@ inline int run_stats(const std::string& path, const std::string& json)
   const auto& edge_histogram = h.edge_length_ratio.counts;
   const auto& radius_histogram = h.radius_ratio.counts;
 
-  std::cout << path << ": vertices " << tr.number_of_vertices() << ", edges " << tr.number_of_finite_edges()
-            << ", faces " << tr.number_of_finite_facets() << ", cells " << tr.number_of_finite_cells()
+  // The counts of the mesh as read (without the cells that complete a domain that is not convex).
+  const ES::Mesh_statistics counts = ES::is_completed_domain(tr) ? domain_counts(tr) : ES::Mesh_statistics();
+  const std::size_t vertices = counts.cells ? counts.vertices : tr.number_of_vertices();
+  const std::size_t all_cells = counts.cells ? counts.cells : tr.number_of_finite_cells();
+  std::cout << path << ": vertices " << vertices << ", edges " << (counts.cells ? counts.edges : tr.number_of_finite_edges())
+            << ", faces " << (counts.cells ? counts.faces : tr.number_of_finite_facets()) << ", cells " << all_cells
             << " (in the domain: " << cells << ")\n"
             << "  dihedral angles: min " << amin << ", max " << amax << " degrees\n"
             << "  edge length ratio: min " << emin << ", max " << emax << "\n"
@@ -241,8 +259,8 @@ inline int run_stats(const std::string& path, const std::string& json)
     Output_files files;
     files.add(json, [&](std::ostream& out) {
       nlohmann::json j = {{"mesh", path},
-                          {"vertices", tr.number_of_vertices()},
-                          {"cells", tr.number_of_finite_cells()},
+                          {"vertices", vertices},
+                          {"cells", all_cells},
                           {"cells_in_domain", cells},
                           {"dihedral_angle", {{"min", amin}, {"max", amax}, {"bin_start", 0}, {"bin_width", 5}, {"histogram", angle_histogram}}},
                           {"edge_length_ratio", {{"min", emin}, {"max", emax}, {"bin_start", 1}, {"bin_width", 0.25}, {"histogram", edge_histogram}}},

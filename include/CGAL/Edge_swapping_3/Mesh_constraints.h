@@ -28,6 +28,7 @@
 #include <boost/property_map/property_map.hpp>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -63,7 +64,11 @@ struct No_constraints
 struct Domain_cell_info
 {
   static constexpr int no_reference = -1; ///< the reference of a facet that is not constrained
-  int subdomain = 0;                      ///< 0 outside the domain
+  /// The subdomain of the cells the package adds outside a domain that is not
+  /// convex (or has cavities, or several parts) to complete it to a
+  /// triangulation of a convex region: outside the domain, and never written.
+  static constexpr int completion = (std::numeric_limits<int>::min)();
+  int subdomain = 0;                      ///< 0 (or `completion`) outside the domain
   /// The boundary reference of facet `i` (the one opposite vertex `i`).
   std::array<int, 4> facet_reference{{no_reference, no_reference, no_reference, no_reference}};
 };
@@ -94,7 +99,7 @@ struct Domain_constraints
   }
   template <class Tr> bool is_in_domain(const Tr& tr, typename Tr::Cell_handle c) const
   {
-    return !tr.is_infinite(c) && c->info().subdomain != 0;
+    return !tr.is_infinite(c) && c->info().subdomain != 0 && c->info().subdomain != Domain_cell_info::completion;
   }
   /// @}
 };

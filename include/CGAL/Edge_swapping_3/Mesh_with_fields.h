@@ -15,6 +15,7 @@
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/internal/exterior_fill.h>
 #include <algorithm>
 #include <array>
 #include <string>
@@ -70,21 +71,93 @@ using Numbered_domain_triangulation_3 =
                                   CGAL::Triangulation_cell_base_with_info_3<Domain_cell_info, Gt>>>;
 
 /// \ingroup PkgEdgeSwapping3Domains
+/// Whether `tr`, built by `build_numbered_mesh()`, holds cells that complete
+/// its domain to a convex region (cells of subdomain `Domain_cell_info::completion`):
+/// then the hull's cells are all such cells.
+template <class Tr>
+bool is_completed_domain(const Tr& tr)
+{
+  if(tr.dimension() < 3) return false;
+  const auto c = tr.infinite_vertex()->cell();
+  return c->neighbor(c->index(tr.infinite_vertex()))->info().subdomain == Domain_cell_info::completion;
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// The number of finite cells of `tr` that are the mesh's own (not added by
+/// `build_numbered_mesh()` to complete its domain).
+template <class Tr>
+std::size_t number_of_mesh_cells(const Tr& tr)
+{
+  if(!is_completed_domain(tr)) return tr.number_of_finite_cells();
+  std::size_t n = 0;
+  for(auto c : tr.finite_cell_handles()) n += c->info().subdomain != Domain_cell_info::completion;
+  return n;
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
 /// Builds in `tr` (empty) the tetrahedra of the mesh `mesh`, each vertex
 /// numbered by its point, each cell with its subdomain (1 without
 /// references, 0 for the infinite cells), and the boundary references of the
-/// triangles on their facets. Returns an empty string, or what is wrong with
-/// the mesh (see `build_triangulation_from_cells()`; a triangle that is not a
-/// facet of the tetrahedra).
+/// triangles on their facets.
+///
+/// A mesh of a domain of any shape is accepted: when the tetrahedra do not
+/// make a triangulation of the convex hull of their points (the domain is
+/// not convex, has cavities or several parts), the outside of the domain is
+/// filled up to a box around it with cells of subdomain
+/// `Domain_cell_info::completion` (by TetGen's library, the domain's
+/// boundary kept: points are added only strictly outside the domain, their
+/// vertices numbered from `std::size_t(-1)` down), and the whole is checked
+/// exactly as one triangulation of the box. The boundary of the domain
+/// then separates cells of different subdomains, so no operation removes it;
+/// `numbered_mesh_snapshot()` writes back the domain's cells alone.
+///
+/// Returns an empty string, or what is wrong with the mesh (see
+/// `build_triangulation_from_cells()`; a facet of more than two tetrahedra;
+/// a boundary that intersects itself; a triangle that is not a facet of the
+/// tetrahedra).
 /// \tparam Tr a `Numbered_domain_triangulation_3`, or a triangulation with the same `info()` types
 template <class Tr, class Point>
 std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
 {
+  typedef typename Tr::Point Tr_point;
   std::vector<typename Tr::Vertex_handle> vertices;
   std::vector<typename Tr::Cell_handle> cells;
-  const std::string problem = build_triangulation_from_cells(tr, mesh.points, mesh.cells, vertices, cells);
-  if(!problem.empty()) return problem;
-  for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k;
+  for(int r : mesh.cell_references)
+    if(r == Domain_cell_info::completion)
+      return "the subdomain reference " + std::to_string(r) + " is reserved (the package's mark of cells outside "
+             "the domain): renumber the subdomains";
+  bool boundary_shape = false;
+  std::string problem =
+      internal::build_triangulation_from_cells(tr, mesh.points, mesh.cells, vertices, cells, 100000, &boundary_shape);
+  std::size_t added = 0;
+  if(!problem.empty())
+  {
+    if(!boundary_shape) return problem;
+    // Not the triangulation of its convex hull: fill the outside.
+    internal::Exterior_fill fill = internal::fill_exterior(mesh.points, mesh.cells);
+    if(!fill.problem.empty()) return fill.problem;
+    std::vector<Tr_point> points(mesh.points.begin(), mesh.points.end());
+    for(const auto& p : fill.added_points) points.emplace_back(p[0], p[1], p[2]);
+    std::vector<std::array<std::size_t, 4>> all = mesh.cells;
+    // The added cells take the orientation of the domain's.
+    auto orientation = tr.geom_traits().orientation_3_object();
+    auto sign = [&](const std::array<std::size_t, 4>& t) {
+      return orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]);
+    };
+    const Orientation domain_sign = sign(mesh.cells.front());
+    for(auto t : fill.cells)
+    {
+      if(sign(t) != domain_sign) std::swap(t[0], t[1]);
+      all.push_back(t);
+    }
+    problem = internal::build_triangulation_from_cells(tr, points, all, vertices, cells, 100000);
+    if(!problem.empty())
+      return "the domain's boundary could not be kept while filling its outside (" + problem +
+             "): the tetrahedra overlap, or the mesh is not conforming";
+    added = fill.added_points.size();
+  }
+  const std::size_t own = mesh.points.size();
+  for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k < own ? k : std::size_t(-1) - (k - own);
   const bool one_subdomain = mesh.cell_references.empty();
   for(auto c : tr.all_cell_handles())
   {
@@ -95,7 +168,9 @@ std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
   // The cells come in the order of the tetrahedra read (a jump in memory
   // for each, in the Hilbert order of a large mesh: only when needed).
   if(!one_subdomain)
-    for(std::size_t k = 0; k < cells.size(); ++k) cells[k]->info().subdomain = mesh.cell_references[k];
+    for(std::size_t k = 0; k < mesh.cells.size(); ++k) cells[k]->info().subdomain = mesh.cell_references[k];
+  if(added > 0)
+    for(std::size_t k = mesh.cells.size(); k < cells.size(); ++k) cells[k]->info().subdomain = Domain_cell_info::completion;
   for(std::size_t k = 0; k < mesh.triangles.size(); ++k)
   {
     const auto& t = mesh.triangles[k];
@@ -125,12 +200,13 @@ void mark_point_set_domain(Tr& tr)
 }
 
 /// \ingroup PkgEdgeSwapping3Domains
-/// Returns `run(constraints)`: `Domain_constraints` when `mesh` has
-/// references (subdomains, boundary triangles), else `No_constraints`.
-template <class Point, class Run>
-auto with_mesh_constraints(const Mesh_with_fields<Point>& mesh, Run run)
+/// Returns `run(constraints)` for `tr`, built from `mesh` by
+/// `build_numbered_mesh()`: `Domain_constraints` when `mesh` has references
+/// (subdomains, boundary triangles) or `tr` completes a domain that is not convex, else `No_constraints`.
+template <class Tr, class Point, class Run>
+auto with_mesh_constraints(const Tr& tr, const Mesh_with_fields<Point>& mesh, Run run)
 {
-  if(mesh.has_references) return run(Domain_constraints());
+  if(mesh.has_references || is_completed_domain(tr)) return run(Domain_constraints());
   return run(No_constraints());
 }
 
@@ -187,8 +263,10 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
   out.has_references = mesh.has_references;
   out.cells.reserve(tr.number_of_finite_cells());
   out.cell_references.reserve(tr.number_of_finite_cells());
+  auto added = [](typename Tr::Cell_handle c) { return c->info().subdomain == Domain_cell_info::completion; };
   for(auto c : tr.finite_cell_handles())
   {
+    if(added(c)) continue;
     out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
     out.cell_references.push_back(mesh.has_references ? c->info().subdomain : 1);
   }
@@ -203,9 +281,9 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
   for(auto c : tr.finite_cell_handles())
     for(int i = 0; i < 4; ++i)
     {
-      if(c->info().facet_reference[i] == Domain_cell_info::no_reference) continue;
+      if(added(c) || c->info().facet_reference[i] == Domain_cell_info::no_reference) continue;
       const auto n = c->neighbor(i);
-      if(!tr.is_infinite(n) && !(key(c) < key(n))) continue;
+      if(!tr.is_infinite(n) && !added(n) && !(key(c) < key(n))) continue;
       out.triangles.push_back(
           {c->vertex((i + 1) & 3)->info(), c->vertex((i + 2) & 3)->info(), c->vertex((i + 3) & 3)->info()});
       out.triangle_references.push_back(c->info().facet_reference[i]);

@@ -12,6 +12,8 @@
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -32,17 +34,55 @@ struct Mesh_statistics
 };
 
 /// \ingroup PkgEdgeSwapping3Functions
-/// The counts and extreme qualities of the finite part of `tr`.
-template <class Tr>
-Mesh_statistics mesh_statistics(const Tr& tr)
+/// The counts and extreme qualities of the finite part of `tr` in the domain.
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{mesh_constraints}
+///     \cgalParamDescription{a model of `MeshConstraints_3`: only the cells `is_in_domain`, and the vertices,
+///       edges and faces of such cells, are counted}
+///     \cgalParamDefault{`No_constraints`: the whole finite part}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class Tr, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Mesh_statistics mesh_statistics(const Tr& tr, const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto constraints = choose_parameter(get_parameter(np, internal_np::mesh_constraints), No_constraints());
+  constexpr bool everything = std::is_same<std::decay_t<decltype(constraints)>, No_constraints>::value;
   Mesh_statistics s;
-  s.vertices = tr.number_of_vertices();
-  s.edges = tr.number_of_finite_edges();
-  s.faces = tr.number_of_finite_facets();
-  s.cells = tr.number_of_finite_cells();
+  auto in_domain = [&](typename Tr::Cell_handle c) { return everything || constraints.is_in_domain(tr, c); };
+  if(everything)
+  {
+    s.vertices = tr.number_of_vertices();
+    s.edges = tr.number_of_finite_edges();
+    s.faces = tr.number_of_finite_facets();
+    s.cells = tr.number_of_finite_cells();
+  }
+  else
+  {
+    for(auto v : tr.finite_vertex_handles())
+    {
+      std::vector<typename Tr::Cell_handle> around;
+      tr.finite_incident_cells(v, std::back_inserter(around));
+      s.vertices += std::any_of(around.begin(), around.end(), in_domain);
+    }
+    for(auto e : tr.finite_edges())
+    {
+      auto c = tr.incident_cells(e), done = c;
+      bool found = false;
+      do found = found || (!tr.is_infinite(c) && in_domain(c)); while(!found && ++c != done);
+      s.edges += found;
+    }
+    for(auto f : tr.finite_facets())
+    {
+      const auto n = f.first->neighbor(f.second);
+      s.faces += (!tr.is_infinite(f.first) && in_domain(f.first)) || (!tr.is_infinite(n) && in_domain(n));
+    }
+  }
   for(auto c : tr.finite_cell_handles())
   {
+    if(!in_domain(c)) continue;
+    if(!everything) ++s.cells;
     const auto& p0 = internal::bare_point(c->vertex(0)->point());
     const auto& p1 = internal::bare_point(c->vertex(1)->point());
     const auto& p2 = internal::bare_point(c->vertex(2)->point());

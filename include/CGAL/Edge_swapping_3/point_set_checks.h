@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The problems that keep a point set from having a 3-D triangulation, named
-// for the user: coordinates outside the supported range, too few points,
+// for the user: coordinates not finite, an extent outside the supported range, too few points,
 // duplicates, all coplanar. Exact predicates.
 
 #ifndef CGAL_EDGE_SWAPPING_3_POINT_SET_CHECKS_H
@@ -20,33 +20,34 @@
 namespace CGAL {
 namespace Edge_swapping_3 {
 
-/// The supported coordinate range: every coordinate is 0 or has a magnitude
-/// in [`min_nonzero_coordinate`, `max_coordinate`]. The exact predicates have
-/// no limit, but the constructions do: within this range, every one the
-/// package makes (circumcenters, squared distances, barycentric weights, the
-/// quality measures: products of up to six coordinate differences) stays
-/// finite and clear of underflow.
-constexpr double max_coordinate = 1e30;
-constexpr double min_nonzero_coordinate = 1e-30; ///< the smallest magnitude of a nonzero coordinate
+/// The supported extent of a point set: along each axis, the largest
+/// coordinate minus the smallest is at most `max_extent`, and along the
+/// longest axis at least `min_extent`. Any finite coordinate is accepted
+/// (1e-32 beside 1, a mesh placed at 1e20): the exact predicates have no
+/// limit, and every construction the package makes (circumcenters, squared
+/// distances, barycentric weights, the quality measures) works on coordinate
+/// differences, which in this range stay finite and clear of underflow.
+constexpr double max_extent = 1e30;
+constexpr double min_extent = 1e-30; ///< the smallest extent along the longest axis
 
-/// An empty string if `x` is a supported coordinate; otherwise why not.
+/// An empty string if `x` is a supported coordinate (a finite number); otherwise why not.
 inline std::string coordinate_problem(double x)
 {
   if(std::isnan(x)) return "a coordinate is not a number (nan)";
   if(std::isinf(x)) return "a coordinate is not finite";
-  const double a = std::abs(x);
-  if(a > max_coordinate || (a != 0 && a < min_nonzero_coordinate))
-  {
-    char shortest[32]; // the shortest text that reads back as x
-    const auto end = std::to_chars(shortest, shortest + sizeof shortest, x).ptr;
-    return "the coordinate " + std::string(shortest, end) +
-           " is outside the supported range (0, or 1e-30 to 1e30 in magnitude)";
-  }
   return std::string();
 }
 
-/// An empty string if `points` (coordinates in the supported range) span 3-D space with no
-/// point repeated; otherwise what is wrong, with 0-based point numbers. Named parameter:
+/// The shortest text that reads back as `x`.
+inline std::string shortest_text(double x)
+{
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  return std::string(text, end);
+}
+
+/// An empty string if `points` (finite coordinates, within the supported extent) span 3-D
+/// space with no point repeated; otherwise what is wrong, with 0-based point numbers. Named parameter:
 /// `geom_traits` (CGAL's; default: the kernel of the points).
 template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::string point_set_problem(const std::vector<Point>& points,
@@ -57,13 +58,30 @@ std::string point_set_problem(const std::vector<Point>& points,
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   const auto gt = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Kernel());
   const std::size_t n = points.size();
+  double low[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, high[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for(std::size_t k = 0; k < n; ++k)
     for(int c = 0; c < 3; ++c)
     {
-      const std::string problem = coordinate_problem(CGAL::to_double(points[k][c]));
+      const double x = CGAL::to_double(points[k][c]);
+      const std::string problem = coordinate_problem(x);
       if(!problem.empty()) return "point " + std::to_string(k) + ": " + problem;
+      low[c] = (std::min)(low[c], x);
+      high[c] = (std::max)(high[c], x);
     }
   if(n < 4) return "fewer than four points (" + std::to_string(n) + ")";
+  double longest = 0;
+  for(int c = 0; c < 3; ++c)
+  {
+    const double extent = high[c] - low[c]; // inf when the difference overflows
+    if(!(extent <= max_extent))
+      return std::string("the points span ") + (std::isinf(extent) ? "more than the largest double" : shortest_text(extent)) +
+             " along " + "xyz"[c] + " (from " + shortest_text(low[c]) + " to " + shortest_text(high[c]) +
+             "), more than 1e30, the largest extent supported: scale the coordinates";
+    longest = (std::max)(longest, extent);
+  }
+  if(longest < min_extent)
+    return "the points span only " + shortest_text(longest) +
+           " along their longest axis, less than 1e-30, the smallest extent supported: scale the coordinates";
 
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t(0));

@@ -194,9 +194,9 @@ bool locate_circumcenter(const Tr& tr, typename Tr::Cell_handle c, const Constra
       bare_point(internal::bare_point(c->vertex(0)->point())), bare_point(internal::bare_point(c->vertex(1)->point())), bare_point(internal::bare_point(c->vertex(2)->point())),
       bare_point(internal::bare_point(c->vertex(3)->point())));
   // The circumcenter of a cell too flat for double precision can be far off,
-  // or not a number: such a site is refused, and the mesh stays in range.
+  // or not a number: such a site is refused (a far one lies outside the hull).
   for(int k = 0; k < 3; ++k)
-    if(!coordinate_problem(CGAL::to_double(center[k])).empty()) return false;
+    if(!std::isfinite(CGAL::to_double(center[k]))) return false;
   p = point_at<typename Tr::Point>(center);
   typename Tr::Locate_type lt;
   int li, lj;

@@ -68,14 +68,17 @@ std::vector<std::uint32_t> tetrahedra_in_hilbert_order(const std::vector<Point>&
 }
 
 /// `build_triangulation_from_cells`, in the Hilbert order of the points when
-/// there are more than `hilbert_order_above` tetrahedra.
+/// there are more than `hilbert_order_above` tetrahedra. When it fails only
+/// because the boundary is not one closed convex surface (a domain that a
+/// fill of its outside completes), `*boundary_shape` (if given) is set.
 template <class Tr>
 std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr::Point>& points,
                                            const std::vector<std::array<std::size_t, 4>>& cells,
                                            std::vector<typename Tr::Vertex_handle>& vertices,
                                            std::vector<typename Tr::Cell_handle>& cell_handles,
-                                           std::size_t hilbert_order_above)
+                                           std::size_t hilbert_order_above, bool* boundary_shape = nullptr)
 {
+  if(boundary_shape) *boundary_shape = false;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   CGAL_precondition(tr.number_of_vertices() == 0);
@@ -153,6 +156,10 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     tr.clear();
     vertices.clear();
     return why;
+  };
+  auto fail_by_shape = [&](const std::string& why) {
+    if(boundary_shape) *boundary_shape = true;
+    return fail(why);
   };
 
   // Glue the finite cells through their facets.
@@ -246,7 +253,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
         const auto slot = ridges.emplace(std::make_pair(p, q), std::make_pair(o, m));
         if(slot.second) continue;
         if(slot.first->first == Cell_handle())
-          return fail("the boundary is not a closed surface: an edge lies on more than two boundary facets");
+          return fail_by_shape("the boundary is not a closed surface: an edge lies on more than two boundary facets");
         o->set_neighbor(m, slot.first->first);
         slot.first->first->set_neighbor(slot.first->second, o);
         slot.first->first = Cell_handle();
@@ -254,7 +261,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     }
   bool open_ridge = false;
   ridges.for_each([&](const auto&, const std::pair<Cell_handle, int>& r) { open_ridge = open_ridge || r.first != Cell_handle(); });
-  if(open_ridge) return fail("the boundary is not a closed surface: an edge lies on a single boundary facet");
+  if(open_ridge) return fail_by_shape("the boundary is not a closed surface: an edge lies on a single boundary facet");
 
   // One boundary surface. With every tetrahedron positive and every shared
   // facet between tetrahedra on its two sides, the tetrahedra cover each
@@ -278,8 +285,8 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       }
     }
     if(seen.size() != outside)
-      return fail("the boundary is more than one surface: a facet is shared by more than two tetrahedra, or "
-                  "tetrahedra overlap");
+      return fail_by_shape("the boundary is more than one surface: a facet is shared by more than two "
+                           "tetrahedra, or tetrahedra overlap");
   }
 
   // Convex boundary: no vertex beyond the hull facet next to it.
@@ -293,7 +300,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       std::array<Vertex_handle, 4> u = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
       u[i] = w;
       if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) == POSITIVE)
-        return fail("the mesh does not cover the convex hull of its points: its boundary is not convex");
+        return fail_by_shape("the mesh does not cover the convex hull of its points: its boundary is not convex");
     }
   }
   return std::string();
