@@ -4,7 +4,7 @@
 # (AddressSanitizer and UndefinedBehaviorSanitizer) and runs each for
 # SECONDS (default 60), from the seed corpus in test/Edge_swapping_3/fuzz/corpus.
 #
-#   bash scripts/fuzz.sh [SECONDS] [READER...]    readers: node ele medit vtu topcom case_json results streamed trace
+#   bash scripts/fuzz.sh [SECONDS] [READER...]    readers: node ele medit msh vtu topcom case_json results streamed trace
 #
 # The growing corpus stays in build-fuzz/corpus/READER; a finding (crash,
 # sanitizer report, uncaught exception, time-out over 10 s, over 2 GB) is
@@ -15,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
 readers=("$@")
-[ ${#readers[@]} -gt 0 ] || readers=(node ele medit vtu topcom case_json results streamed trace)
+[ ${#readers[@]} -gt 0 ] || readers=(node ele medit msh vtu topcom case_json results streamed trace)
 
 bash scripts/install_dependencies.sh clang libclang-rt-14-dev
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DEDGE_SWAPPING_3_FUZZ=ON \

@@ -5,7 +5,7 @@
 # clang). Run as root on Debian 12 (apt-get). Called by the two README commands.
 set -euo pipefail
 
-packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev python3-matplotlib)
+packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev zlib1g-dev python3-matplotlib)
 # The benchmarks compare with TetGen (the program, and its optimizer through libtet) when it is there.
 packages+=(tetgen libtet1.5-dev)
 # The conjecture laboratory enumerates triangulations with TOPCOM (and its tests do).

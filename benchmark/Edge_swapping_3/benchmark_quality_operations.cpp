@@ -73,7 +73,7 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted)
     q.below_10 += lo < 10;
     q.above_165 += hi > 165;
     q.above_175 += hi > 175;
-    ratios.push_back(3 / ES::radius_ratio(p0, p1, p2, p3));
+    ratios.push_back(3 / ES::circumradius_over_inradius(p0, p1, p2, p3));
     ++q.cells;
   }
   std::sort(ratios.begin(), ratios.end());

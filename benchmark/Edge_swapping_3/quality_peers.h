@@ -21,6 +21,7 @@
 #include <CGAL/tetrahedral_remeshing.h>
 #include <CGAL/Tetrahedral_remeshing/Remeshing_triangulation_3.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <CGAL/Edge_swapping_3/internal/exterior_fill.h>
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <array>
 #include <cstdlib>
@@ -110,9 +111,28 @@ inline Peer_result cgal_remeshing(const Cell_mesh& in, bool smooth, int iteratio
   std::vector<Tr::Vertex_handle> vertices;
   std::vector<Tr::Cell_handle> cells;
   r.error = CGAL::Edge_swapping_3::build_triangulation_from_cells(tr, in.points, in.cells, vertices, cells);
-  if(!r.error.empty()) return r;
+  std::vector<K::Point_3> all_points = in.points;
+  if(!r.error.empty())
+  {
+    // A domain that is not convex: its outside filled as the package does,
+    // those cells in subdomain 0 (CGAL's outside), which the remesher keeps apart.
+    auto fill = CGAL::Edge_swapping_3::internal::fill_exterior(in.points, in.cells);
+    if(!fill.problem.empty()) return r;
+    for(const auto& p : fill.added_points) all_points.emplace_back(p[0], p[1], p[2]);
+    std::vector<std::array<std::size_t, 4>> all = in.cells;
+    const auto sign = [&](const std::array<std::size_t, 4>& t) {
+      return CGAL::orientation(all_points[t[0]], all_points[t[1]], all_points[t[2]], all_points[t[3]]);
+    };
+    for(auto t : fill.cells)
+    {
+      if(sign(t) != sign(in.cells.front())) std::swap(t[0], t[1]);
+      all.push_back(t);
+    }
+    r.error = CGAL::Edge_swapping_3::build_triangulation_from_cells(tr, all_points, all, vertices, cells);
+    if(!r.error.empty()) return r;
+  }
   for(auto c : tr.all_cell_handles()) c->set_subdomain_index(0);
-  for(std::size_t k = 0; k < cells.size(); ++k) cells[k]->set_subdomain_index(in.subdomains[k]);
+  for(std::size_t k = 0; k < in.cells.size(); ++k) cells[k]->set_subdomain_index(in.subdomains[k]);
   std::map<Tr::Vertex_handle, std::size_t> index;
   for(std::size_t k = 0; k < vertices.size(); ++k) index[vertices[k]] = k;
 
@@ -132,14 +152,27 @@ inline Peer_result cgal_remeshing(const Cell_mesh& in, bool smooth, int iteratio
   remesher.finalize();
   r.seconds = timer.time();
 
-  std::vector<K::Point_3> points(in.points.size());
+  std::vector<K::Point_3> points(all_points.size());
   for(const auto& [v, k] : index)
   {
     points[k] = v->point();
-    r.moved += (points[k] != in.points[k]);
+    r.moved += (points[k] != all_points[k]);
   }
   r.mesh = cell_mesh_of(tr, points, [&](Tr::Vertex_handle v) { return index.at(v); },
                         [](Tr::Cell_handle c) { return int(c->subdomain_index()); });
+  if(all_points.size() > in.points.size())
+  {
+    // The domain's cells alone, on the input's points.
+    Cell_mesh domain;
+    domain.points.assign(r.mesh.points.begin(), r.mesh.points.begin() + std::ptrdiff_t(in.points.size()));
+    for(std::size_t k = 0; k < r.mesh.cells.size(); ++k)
+      if(r.mesh.subdomains[k] != 0)
+      {
+        domain.cells.push_back(r.mesh.cells[k]);
+        domain.subdomains.push_back(r.mesh.subdomains[k]);
+      }
+    r.mesh = std::move(domain);
+  }
   return r;
 }
 

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Meshes of domains of any shape (non-convex, with cavities, several regions,
-// several parts, coordinates as CAD kernels write them): accepted, completed
-// outside to a convex region, optimized, and written back with exactly the
-// domain's cells, the same vertices, boundaries, interfaces and references.
-// Checked exactly, through the library and through the program.
+// Meshes as users have them. Domains of any shape (non-convex, with
+// cavities, several regions, several parts, coordinates as CAD kernels write
+// them): accepted, completed outside to a convex region, optimized, and
+// written back with exactly the domain's cells, the same vertices,
+// boundaries, interfaces and references, checked exactly through the library
+// and through the program. Files as Gmsh and VTK (ParaView) write them.
 
 #include "test_common.h"
 #include "program_runner.h"
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/make_two_spheres_mesh.h>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
@@ -57,6 +59,9 @@ Mesh cube_grid_mesh(int nx, int ny, int nz, const std::function<int(int, int, in
             ++c[path[s]];
             t[s + 1] = vertex(c[0], c[1], c[2]);
           }
+          // Positively oriented, as meshers write them.
+          if(CGAL::orientation(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]) == CGAL::NEGATIVE)
+            std::swap(t[0], t[1]);
           m.cells.push_back(t);
           m.cell_references.push_back(r);
         }
@@ -225,7 +230,7 @@ TEST_CASE("Domains of any shape: an L-shape, a cube with a cavity, two regions, 
   }
   SECTION("coordinates as a CAD kernel writes them: rounding zeros of 1e-31 beside 1, far from the origin")
   {
-    for(double offset : {0.0, 1e20})
+    for(double offset : {0.0, 1e12})
     {
       INFO("offset " << offset);
       const auto point_of = [offset](int i, int j, int k) {
@@ -237,7 +242,7 @@ TEST_CASE("Domains of any shape: an L-shape, a cube with a cavity, two regions, 
       if(offset == 0) require_domain_kept(m, true);
       else
       {
-        Numbered tr; // at 1e20 the rounding zeros vanish into offset + 0: the points are the grid's
+        Numbered tr; // at 1e12 the rounding zeros vanish into offset + 0: the points are the grid's
         REQUIRE(ES::build_numbered_mesh(tr, m) == "");
         REQUIRE(ES::number_of_mesh_cells(tr) == m.cells.size());
       }
@@ -289,10 +294,13 @@ TEST_CASE("Meshes that are not valid domains are refused with what is wrong", "[
   SECTION("a tetrahedron repeated as a third one on a facet")
   {
     Mesh m = l_shape;
-    // A tetrahedron on the far side of a shared facet: three on that facet.
+    // A third tetrahedron on a facet inside the first cube (of two already).
     const auto t = m.cells[0];
-    m.points.push_back(Point(-0.5, -0.5, -0.5));
-    m.cells.push_back({t[1], t[0], t[2], m.points.size() - 1});
+    m.points.push_back(Point(0.9, 0.6, 0.3));
+    std::array<std::size_t, 4> third = {t[1], t[2], t[3], m.points.size() - 1};
+    if(CGAL::orientation(m.points[third[0]], m.points[third[1]], m.points[third[2]], m.points[third[3]]) == CGAL::NEGATIVE)
+      std::swap(third[0], third[1]);
+    m.cells.push_back(third);
     m.cell_references.push_back(1);
     Numbered tr;
     const std::string problem = ES::build_numbered_mesh(tr, m);
@@ -328,5 +336,231 @@ TEST_CASE("Meshes that are not valid domains are refused with what is wrong", "[
     m.cell_references[3] = ES::Domain_cell_info::completion;
     Numbered tr;
     REQUIRE(ES::build_numbered_mesh(tr, m).find("is reserved") != std::string::npos);
+  }
+}
+
+namespace {
+
+// Writes `m` to `path` in `w` (the format of its extension).
+void write_mesh(const Workdir& w, const std::string& name, const Mesh& m,
+                ES::IO::Gmsh_format msh = ES::IO::MSH_4_1_ASCII, ES::IO::Vtu_encoding vtu = ES::IO::VTU_ASCII)
+{
+  ES::IO::Mesh_file_options options;
+  options.msh = msh;
+  options.vtu = vtu;
+  ES::IO::write_mesh_with_fields(w.path(name), m, [&](const std::string& file, std::function<void(std::ostream&)> write) {
+    std::ofstream out(file, std::ios::binary);
+    write(out);
+  }, options);
+}
+
+Mesh read_mesh(const Workdir& w, const std::string& name) { return ES::IO::read_mesh_with_fields<Point>(w.path(name)); }
+
+// The shape of a mesh read back from a format that keeps fewer things:
+// TetGen files no references, VTK files no triangles.
+Domain_shape comparable(Domain_shape s, const std::string& format)
+{
+  if(format == "ele" || format == "vtu") s.triangles.clear();
+  if(format == "ele")
+  {
+    s.interfaces.clear();
+    CGAL::Exact_rational total = 0;
+    for(const auto& [r, v] : s.volumes) total += v;
+    s.volumes = {{1, total}};
+  }
+  return s;
+}
+
+} // namespace
+
+TEST_CASE("edge_swap on domains of any shape: check, stats and optimize keep the domain in every format",
+          "[domain][any shape][program]")
+{
+  Workdir w;
+  const std::map<std::string, Mesh> meshes = {
+      {"l_shape_two_regions", cube_grid_mesh(4, 4, 2, [](int i, int j, int) { return i >= 2 && j >= 2 ? 0 : i < 2 ? 1 : 7; })},
+      {"cavity", cube_grid_mesh(4, 4, 4, [](int i, int j, int k) {
+         return (i == 1 || i == 2) && (j == 1 || j == 2) && (k == 1 || k == 2) ? 0 : 1;
+       })},
+      {"two_parts", cube_grid_mesh(5, 2, 2, [](int i, int, int) { return i <= 1 ? 1 : i == 4 ? 2 : 0; })},
+      {"tiny_coordinates", cube_grid_mesh(4, 4, 2, [](int i, int j, int) { return i >= 2 && j >= 2 ? 0 : 1; },
+                                          [](int i, int j, int k) {
+                                            return Point(i == 0 ? ((j + k) % 2 ? -1.1998078261295e-31 : 3e-32) : i, j, k);
+                                          })}};
+  for(const auto& [name, m] : meshes)
+    for(const std::string in_format : {"mesh", "msh"})
+    {
+      const std::string input = name + "." + in_format;
+      write_mesh(w, input, m);
+      INFO(input);
+      const Run check = w.run("check " + w.path(input));
+      INFO(check.out << check.err);
+      REQUIRE(check.exit_code == 0);
+      REQUIRE(check.out.find("valid mesh of a domain that is not its convex hull") != std::string::npos);
+      REQUIRE(check.out.find("cells " + std::to_string(m.cells.size())) != std::string::npos);
+      const Run stats = w.run("stats " + w.path(input));
+      REQUIRE(stats.exit_code == 0);
+      REQUIRE(stats.out.find("cells " + std::to_string(m.cells.size()) + " (in the domain: " +
+                             std::to_string(m.cells.size()) + ")") != std::string::npos);
+      const auto before = dihedral_extremes(m);
+      for(const std::string out_format : {"mesh", "msh", "vtu", "ele"})
+      {
+        INFO("to ." << out_format);
+        const std::string output = name + "_out." + out_format;
+        const Run r = w.run("optimize " + w.path(input) + " --criterion minmax-dihedral --operations topological -o " +
+                            w.path(output));
+        INFO(r.out << r.err);
+        REQUIRE(r.exit_code == 0);
+        const Mesh out = read_mesh(w, output);
+        REQUIRE(out.points == m.points);
+        REQUIRE(comparable(shape_of(out), out_format) == comparable(shape_of(m), out_format));
+        const auto after = dihedral_extremes(out);
+        REQUIRE(after.second <= before.second);
+        REQUIRE(after.first >= before.first - 1e-9);
+      }
+    }
+}
+
+TEST_CASE("Gmsh files: 4.1 and 2.2, ASCII and binary, read as Gmsh wrote them and written back", "[files][gmsh]")
+{
+  // An L-shaped block meshed by Gmsh 4.8 (OpenCASCADE), saved in the four encodings.
+  const std::string dir = std::string(EDGE_SWAPPING_3_FIXTURES) + "/../fuzz/corpus/msh/";
+  std::vector<Mesh> meshes;
+  for(const std::string file : {"l_shape_41.msh", "l_shape_41_binary.msh", "l_shape_22.msh", "l_shape_22_binary.msh"})
+  {
+    INFO(file);
+    meshes.push_back(ES::IO::read_mesh_with_fields<Point>(dir + file));
+    const Mesh& m = meshes.back();
+    REQUIRE(m.cells.size() == 99);
+    REQUIRE(m.points.size() == m.point_tags.size());
+    REQUIRE(std::set<int>(m.cell_references.begin(), m.cell_references.end()) == std::set<int>{7});
+    REQUIRE(std::set<int>(m.triangle_references.begin(), m.triangle_references.end()) == std::set<int>{3});
+    REQUIRE(shape_of(m).boundary.size() == m.triangles.size()); // every boundary triangle listed, no other
+    REQUIRE(m.cells == meshes.front().cells);
+    REQUIRE(m.point_tags == meshes.front().point_tags);
+    // Gmsh writes 16 significant digits in ASCII, every bit in binary.
+    REQUIRE(m.points.size() == meshes.front().points.size());
+    for(std::size_t k = 0; k < m.points.size(); ++k)
+      REQUIRE(CGAL::squared_distance(m.points[k], meshes.front().points[k]) < 1e-28);
+  }
+  REQUIRE(meshes[0].points == meshes[2].points); // 4.1 and 2.2 in ASCII
+  REQUIRE(meshes[1].points == meshes[3].points); // and in binary
+  // Written in each encoding and read back: the same mesh, node tags included.
+  Workdir w;
+  const Mesh& m = meshes.front();
+  for(auto format : {ES::IO::MSH_4_1_ASCII, ES::IO::MSH_4_1_BINARY, ES::IO::MSH_2_2_ASCII, ES::IO::MSH_2_2_BINARY})
+  {
+    INFO("format " << int(format));
+    write_mesh(w, "back.msh", m, format);
+    const Mesh back = read_mesh(w, "back.msh");
+    REQUIRE(back.points == m.points);
+    REQUIRE(back.point_tags == m.point_tags);
+    REQUIRE(shape_of(back) == shape_of(m));
+  }
+  // The program: optimized in a binary output, node tags kept.
+  REQUIRE(w.run("optimize " + dir + "l_shape_22_binary.msh --criterion minmax-dihedral --operations topological "
+                "--msh-format 4.1-binary -o " + w.path("o.msh")).exit_code == 0);
+  const Mesh out = read_mesh(w, "o.msh");
+  REQUIRE(out.point_tags == m.point_tags);
+  REQUIRE(shape_of(out).boundary == shape_of(m).boundary);
+}
+
+TEST_CASE("Bad Gmsh files are refused with the file, the place and the problem, exit 2 and no output",
+          "[files][gmsh][hostile]")
+{
+  Workdir w;
+  const std::string head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+  const std::string nodes = "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"$MeshFormat\n3.0 0 8\n$EndMeshFormat\n", "MSH version '3.0' is not supported"},
+      {"hello", "not a Gmsh MSH file"},
+      {head + nodes, "no $Elements section"},
+      {head + nodes + "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 9\n$EndElements\n", "node 9, which is not in $Nodes"},
+      {head + nodes + "$Elements\n1 1 1 1\n3 1 5 1\n1 1 2 3 4 1 2 3 4\n$EndElements\n", "only linear tetrahedra"},
+      {head + "$Nodes\n1 1000000000 1 4\n3 1 0 4\n1\n$EndNodes\n", "more than the rest of the file can hold"},
+      {head + "$Nodes\n1 4 1 4\n3 1 0 4\n1\n1\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n", "node tag 1 is repeated"},
+      {head + "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\nnan 0 0\n0 1 0\n0 0 1\n$EndNodes\n", "a coordinate"},
+      {head + nodes + "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n$PartitionedEntities\n", "partitioned"},
+  };
+  for(const auto& [text, what] : cases)
+  {
+    w.write("bad.msh", text);
+    require_clean_rejection(w, "optimize " + w.path("bad.msh") + " --criterion minmax-dihedral -o " + w.path("o.msh"),
+                            what, {"bad.msh"});
+    require_clean_rejection(w, "check " + w.path("bad.msh"), "bad.msh:", {"bad.msh"});
+  }
+  // A valid one for contrast.
+  w.write("good.msh", head + nodes + "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n");
+  REQUIRE(w.run("check " + w.path("good.msh")).exit_code == 0);
+}
+
+TEST_CASE("VTK files as VTK and ParaView write them: inline or appended, raw or base64, zlib or not", "[files][vtu]")
+{
+  // The L-shaped mesh that Gmsh wrote, and the same written by VTK 9.1's own
+  // XML writer in five encodings (fixtures/make_vtk_fixtures.py).
+  const std::string dir = std::string(EDGE_SWAPPING_3_FIXTURES) + "/../fuzz/corpus/";
+  const Mesh gmsh = ES::IO::read_mesh_with_fields<Point>(dir + "msh/l_shape_22.msh");
+  for(const std::string file : {"l_shape_appended_raw_zlib.vtu", "l_shape_appended_base64_zlib.vtu",
+                                "l_shape_binary_zlib.vtu", "l_shape_binary_uint32.vtu", "l_shape_appended_raw_uint32.vtu"})
+  {
+    INFO(file);
+    const Mesh m = ES::IO::read_mesh_with_fields<Point>(dir + "vtu/" + file);
+    REQUIRE(m.points == gmsh.points);
+    REQUIRE(m.cells == gmsh.cells);
+    REQUIRE(m.cell_references == std::vector<int>(gmsh.cells.size(), 7));
+    REQUIRE(m.field_index("x") == 0);
+    for(std::size_t k = 0; k < m.points.size(); ++k) REQUIRE(m.fields[0][k] == m.points[k].x());
+  }
+  // Ours in binary (as ParaView writes by default), read back: the same.
+  Workdir w;
+  Mesh with_field = gmsh;
+  with_field.field_names = {"x"};
+  with_field.fields = {{}};
+  for(const auto& p : gmsh.points) with_field.fields[0].push_back(p.x());
+  with_field.cell_field_names = {"subdomain"};
+  with_field.cell_fields = {std::vector<double>(gmsh.cells.size(), 7.0)};
+  write_mesh(w, "b.vtu", with_field, ES::IO::MSH_4_1_ASCII, ES::IO::VTU_BINARY_ZLIB);
+  REQUIRE(Workdir::slurp(w.path("b.vtu")).find("<AppendedData encoding=\"raw\">") != std::string::npos);
+  const Mesh back = read_mesh(w, "b.vtu");
+  REQUIRE(back.points == gmsh.points);
+  REQUIRE(back.cells == gmsh.cells);
+  REQUIRE(back.cell_references == std::vector<int>(gmsh.cells.size(), 7));
+  REQUIRE(back.fields == with_field.fields);
+  // The program too, with --vtu-format binary.
+  const Run r = w.run("optimize " + dir + "vtu/l_shape_appended_raw_zlib.vtu --criterion minmax-dihedral "
+                      "--operations topological --vtu-format binary -o " + w.path("o.vtu"));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const Mesh out = read_mesh(w, "o.vtu");
+  REQUIRE(out.points == gmsh.points);
+  REQUIRE(shape_of(out).boundary == shape_of(gmsh).boundary);
+}
+
+TEST_CASE("Bad binary VTK files are refused with the file and the problem, exit 2 and no output",
+          "[files][vtu][hostile]")
+{
+  Workdir w;
+  const std::string good = Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) +
+                                          "/../fuzz/corpus/vtu/l_shape_appended_raw_zlib.vtu");
+  auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    const auto at = s.find(from);
+    REQUIRE(at != std::string::npos);
+    return s.replace(at, from.size(), to);
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {replaced("compressor=\"vtkZLibDataCompressor\"", "compressor=\"vtkLZ4DataCompressor\""), "is not supported"},
+      {replaced("byte_order=\"LittleEndian\"", "byte_order=\"BigEndian\""), "only LittleEndian"},
+      {replaced("header_type=\"UInt64\"", "header_type=\"UInt16\""), "is not UInt32 or UInt64"},
+      {replaced("NumberOfPoints=\"44\"", "NumberOfPoints=\"45\""), "bytes, not"},
+      {good.substr(0, good.size() - 400), "data array"},
+      {replaced("encoding=\"raw\"", "encoding=\"hex\""), "not raw or base64"},
+      {replaced("offset=\"125\"", "offset=\"999999\""), "beyond the appended data"},
+  };
+  for(const auto& [text, what] : cases)
+  {
+    w.write("bad.vtu", text);
+    require_clean_rejection(w, "stats " + w.path("bad.vtu"), what, {"bad.vtu"});
+    require_clean_rejection(w, "optimize " + w.path("bad.vtu") + " -o " + w.path("o.vtu"), "bad.vtu", {"bad.vtu"});
   }
 }

@@ -81,9 +81,18 @@ TEST_CASE("Inverted - non-conforming and inconsistent meshes are rejected", "[pr
   expect_rejected_mesh("1 4 0\n1 1 2 3 9\n", "not a point of the .node file");
   expect_rejected_mesh("2 4 0\n1 1 2 3 5\n", "more than the rest of the file can hold");
   expect_rejected_mesh("2 4 0\n1 1 2 3 5\n# a comment that pads the file\n", "the file ends after 1 of 2 tetrahedra");
-  expect_rejected_mesh("1 4 0\n1 1 2 3 4\n", "flat");                         // four coplanar corners
-  expect_rejected_mesh("1 4 0\n1 1 2 3 5\n", "is not a vertex of any tetrahedron"); // covers a corner only
+  expect_rejected_mesh("1 4 0\n1 1 2 3 4\n", "coplanar"); // four coplanar corners, the only points used
   expect_rejected_mesh("1 10 0\n1 1 2 3 5 6 7 8 4 1 2\n", "only linear tetrahedra");
+}
+
+TEST_CASE("Points of no tetrahedron are kept in the mesh file, out of the triangulation", "[program]")
+{
+  Workdir w;
+  w.write("in.node", cube_node);
+  w.write("in.ele", "1 4 0\n1 1 2 3 5\n"); // covers a corner only
+  REQUIRE(w.run("optimize " + w.path("in.ele") + " -o " + w.path("out.ele")).exit_code == 0);
+  REQUIRE(Workdir::slurp(w.path("out.node")).find("8 1 1 1") != std::string::npos);
+  REQUIRE(Workdir::slurp(w.path("out.ele")) == "1 4 0\n1 1 2 3 5\n");
 }
 
 TEST_CASE("Meshes with mixed orientation - overlaps or a non-convex boundary are rejected", "[program]")
@@ -361,4 +370,25 @@ TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[p
   REQUIRE(r.out.find("cell for cell: yes") != std::string::npos);
   REQUIRE(r.out.find("Cells") != std::string::npos);
   REQUIRE(r.out.find("52800") != std::string::npos);
+}
+
+TEST_CASE("The program's version, help and unknown commands", "[program]")
+{
+  Workdir w;
+  const Run version = w.run("--version");
+  REQUIRE(version.exit_code == 0);
+  REQUIRE(version.out.rfind("edge_swap ", 0) == 0);
+  // A misspelled command is named, with the commands there are.
+  const Run misspelled = w.run("optimise x.node -o y.ele");
+  REQUIRE(misspelled.exit_code == 2);
+  REQUIRE(misspelled.err.find("unknown command 'optimise'") != std::string::npos);
+  REQUIRE(misspelled.err.find("optimize, check, insert") != std::string::npos);
+  // Each option's help shows its default and, where there are some, its choices; optimize names every format.
+  const Run help = w.run("optimize --help");
+  REQUIRE(help.exit_code == 0);
+  for(const std::string text : {"=delaunay", "cgal|none", ".mesh", ".msh", ".vtu", ".ele", ".node"})
+  {
+    INFO(text);
+    REQUIRE(help.out.find(text) != std::string::npos);
+  }
 }

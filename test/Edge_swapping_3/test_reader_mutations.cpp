@@ -95,8 +95,8 @@ TEST_CASE("Every reader accepts a valid input or rejects it with a message namin
 {
   const unsigned long seed = environment_number("EDGE_SWAPPING_3_MUTATION_SEED", 20261126);
   const unsigned long count = environment_number("EDGE_SWAPPING_3_MUTATIONS", 3000);
-  for(fuzz::Reader reader : {fuzz::Reader::node, fuzz::Reader::ele, fuzz::Reader::medit, fuzz::Reader::vtu,
-                             fuzz::Reader::topcom, fuzz::Reader::case_json, fuzz::Reader::results,
+  for(fuzz::Reader reader : {fuzz::Reader::node, fuzz::Reader::ele, fuzz::Reader::medit, fuzz::Reader::msh,
+                             fuzz::Reader::vtu, fuzz::Reader::topcom, fuzz::Reader::case_json, fuzz::Reader::results,
                              fuzz::Reader::streamed, fuzz::Reader::trace})
   {
     const auto seeds = seed_files(reader);
@@ -133,6 +133,7 @@ TEST_CASE("The program on mutated files: exit 0 or 2 - and on 2 no output file",
   const std::vector<Run_kind> kinds = {
       {fuzz::Reader::node, "in.node", "optimize IN -o OUT.ele --stats OUT.json"},
       {fuzz::Reader::medit, "in.mesh", "optimize IN -o OUT.mesh"},
+      {fuzz::Reader::msh, "in.msh", "optimize IN --criterion minmax-dihedral --operations topological -o OUT.msh"},
       {fuzz::Reader::vtu, "in.vtu", "refine IN --by aspect-ratio --target 2 --max-sites 20 -o OUT.vtu"},
       {fuzz::Reader::case_json, "in.json", "shrink IN -o OUT.json --expect stuck"},
       {fuzz::Reader::results, "in.jsonl", "experiment --families random-cube --sizes 6 --seeds 1 -o IN"},

@@ -15,7 +15,7 @@ namespace edge_swap {
 inline int run_check(const std::string& path)
 {
   const Input in = read_input(path);
-  if(!in.is_mesh) throw Usage_error("check reads a mesh (.ele, .mesh or .vtu), not the point set '" + path + "'");
+  if(!in.is_mesh) throw Usage_error("check reads a mesh (.ele, .mesh, .msh or .vtu), not the point set '" + path + "'");
   Triangulation tr;
   const std::string problem = ES::build_numbered_mesh(tr, in);
   if(!problem.empty())
@@ -27,7 +27,8 @@ inline int run_check(const std::string& path)
   {
     // A domain that is not its convex hull: valid as checked, once filled
     // outside to a box and checked exactly as one triangulation of it.
-    std::size_t cells = 0, boundary = 0;
+    std::size_t vertices = 0, cells = 0, boundary = 0;
+    for(auto v : tr.finite_vertex_handles()) vertices += v->info() < in.points.size();
     std::set<int> subdomains;
     for(auto c : tr.finite_cell_handles())
     {
@@ -37,7 +38,7 @@ inline int run_check(const std::string& path)
       for(int i = 0; i < 4; ++i) boundary += c->neighbor(i)->info().subdomain == ES::Domain_cell_info::completion;
     }
     std::cout << path << ": valid mesh of a domain that is not its convex hull (orientation, conformity, no overlap)\n"
-              << "  vertices " << in.points.size() << ", cells " << cells << ", boundary faces " << boundary
+              << "  vertices " << vertices << ", cells " << cells << ", boundary faces " << boundary
               << ", subdomains " << subdomains.size() << '\n'
               << "  not compared with CGAL's Delaunay triangulation, which covers the convex hull\n";
     return 0;

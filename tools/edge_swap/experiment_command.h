@@ -187,7 +187,7 @@ inline int run_experiment(const Experiment_options& opt)
     }
     ++finished;
     failures += failure;
-    if(timer.time() >= next_report)
+    if(!quiet && timer.time() >= next_report)
     {
       next_report = timer.time() + 2;
       std::cerr << "experiment: " << finished << "/" << todo.size() << " (" << int(finished / timer.time())

@@ -13,6 +13,7 @@
 #define EDGE_SWAP_EXPERIMENT_STREAM_H
 
 #include "experiment_options.h"
+#include "progress.h"
 #include <CGAL/Edge_swapping_3/IO/streamed_results.h>
 #include <CGAL/Edge_swapping_3/IO/topcom_runner.h>
 #include <CGAL/Real_timer.h>
@@ -179,7 +180,7 @@ inline int run_streamed_experiment(const Experiment_options& opt, const ES::Conj
               wrote_tally = true;
               instances_run += list.size();
               held.clear();
-              if(timer.time() >= next_report)
+              if(!quiet && timer.time() >= next_report)
               {
                 next_report = timer.time() + 5;
                 std::cerr << "experiment: " << set << ": triangulation " << first + tally.count << ", " << instances_run

@@ -10,7 +10,7 @@
 namespace edge_swap {
 
 /// Meshes the domain `name` ("two-spheres") with target size `size` and
-/// writes `output` (.mesh, .vtu or .ele). 0 on success; bad options throw.
+/// writes `output` (.mesh, .msh, .vtu or .ele). 0 on success; bad options throw.
 int run_mesh_domain(const std::string& name, const std::string& output, double size);
 
 } // namespace edge_swap

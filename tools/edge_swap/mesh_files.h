@@ -48,6 +48,9 @@ inline std::vector<std::string> mesh_output_paths(const std::string& path)
   }
 }
 
+/// How mesh outputs are encoded (`--msh-format`).
+inline IO::Mesh_file_options mesh_file_options;
+
 /// Adds the files of the output `path` of `tr`, numbered as `in`; a VTK
 /// file also gets the quality of each cell (for ParaView).
 inline void add_mesh_files(Output_files& files, const std::string& path, const Triangulation& tr, const Input& in)
@@ -57,7 +60,8 @@ inline void add_mesh_files(Output_files& files, const std::string& path, const T
   IO::write_mesh_with_fields(path, std::move(mesh),
                              [&files](const std::string& file, std::function<void(std::ostream&)> writer) {
                                files.add(file, std::move(writer));
-                             });
+                             },
+                             mesh_file_options);
 }
 
 } // namespace edge_swap

@@ -127,7 +127,9 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
         return ES::Quality_report(); // refused before any work
       else
       {
-        const auto settings = np::operations(operations, np::mesh_constraints(constraints));
+        typedef std::decay_t<decltype(criterion)> Criterion;
+        const auto settings = np::operations(
+            operations, np::mesh_constraints(constraints, CGAL::parameters::visitor(Worst_first_progress<Criterion>(criterion))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
@@ -247,7 +249,10 @@ inline int run_optimize(const Optimize_options& o)
   else
   {
     require_valid_point_set(in, o.input);
-    build_start(tr, in, o.start, o.seed);
+    // A quality criterion starts from the Delaunay triangulation; the
+    // Delaunay criterion and the helper from the paper's placing start.
+    const bool delaunay_start = !o.start_given && !o.helper && o.criterion != "delaunay";
+    build_start(tr, in, delaunay_start ? "delaunay" : o.start, o.seed);
     ES::mark_point_set_domain(tr);
   }
 

@@ -21,7 +21,7 @@ namespace edge_swap {
 inline Input read_mesh(const std::string& path, Triangulation& tr)
 {
   Input in = read_input(path);
-  if(!in.is_mesh) throw Usage_error("'" + path + "' is a point set; this command needs a mesh (.ele, .mesh or .vtu)");
+  if(!in.is_mesh) throw Usage_error("'" + path + "' is a point set; this command needs a mesh (.ele, .mesh, .msh or .vtu)");
   const std::string problem = ES::build_numbered_mesh(tr, in);
   if(!problem.empty()) throw IO::Input_error(path + ": " + problem);
   return in;
@@ -88,8 +88,8 @@ inline int run_insert(const Insert_options& o)
   files.commit();
   std::cout << "inserted " << inserted << " points (" << existing << " on existing vertices, " << refused
             << " refused: outside the domain or on a constrained face); swaps 2-3 " << swaps[0] << ", 3-2 "
-            << swaps[1] << ", 2-2 " << swaps[2] << ", 4-4 " << swaps[3] << "; vertices " << tr.number_of_vertices()
-            << ", cells " << tr.number_of_finite_cells() << '\n';
+            << swaps[1] << ", 2-2 " << swaps[2] << ", 4-4 " << swaps[3] << "; vertices " << ES::number_of_mesh_vertices(tr)
+            << ", cells " << ES::number_of_mesh_cells(tr) << '\n';
   return 0;
 }
 
@@ -155,6 +155,7 @@ inline int run_refine(const Refine_options& o)
   CGAL::Real_timer clock;
   clock.start();
   auto progress = [&](const ES::Refinement_round& r) {
+    if(quiet) return;
     std::cerr << "refine: round " << r.round << ", " << r.sites_inserted << " sites, " << r.vertices << " vertices";
     if(o.by == "aspect-ratio") std::cerr << ", worst refinable aspect ratio " << r.worst_refinable;
     std::cerr << " (" << clock.time() << " s)\n";
@@ -196,8 +197,8 @@ inline int run_refine(const Refine_options& o)
   write_rounds(files, o.history, total);
   files.commit();
   std::cout << "refine by " << o.by << ": " << total.sites_inserted << " sites inserted, " << total.sites_refused
-            << " refused (outside the domain, on a constrained face, or encroaching upon one); vertices " << tr.number_of_vertices()
-            << ", cells " << tr.number_of_finite_cells();
+            << " refused (outside the domain, on a constrained face, or encroaching upon one); vertices " << ES::number_of_mesh_vertices(tr)
+            << ", cells " << ES::number_of_mesh_cells(tr);
   if(o.by == "aspect-ratio")
     std::cout << "; worst refinable aspect ratio " << total.rounds.front().worst_refinable << " -> "
               << total.rounds.back().worst_refinable << (total.target_met ? " (target met)" : " (target not met)");
@@ -234,10 +235,10 @@ inline int run_stats(const std::string& path, const std::string& json)
   if(cells == 0) throw IO::Input_error(path + ": no tetrahedron in the domain (every reference is 0)");
   const double amin = h.dihedral_angle.min, amax = h.dihedral_angle.max;
   const double emin = h.edge_length_ratio.min, emax = h.edge_length_ratio.max;
-  const double rmin = h.radius_ratio.min, rmax = h.radius_ratio.max;
+  const double rmin = h.circumradius_over_inradius.min, rmax = h.circumradius_over_inradius.max;
   const auto& angle_histogram = h.dihedral_angle.counts;
   const auto& edge_histogram = h.edge_length_ratio.counts;
-  const auto& radius_histogram = h.radius_ratio.counts;
+  const auto& radius_histogram = h.circumradius_over_inradius.counts;
 
   // The counts of the mesh as read (without the cells that complete a domain that is not convex).
   const ES::Mesh_statistics counts = ES::is_completed_domain(tr) ? domain_counts(tr) : ES::Mesh_statistics();
@@ -248,7 +249,8 @@ inline int run_stats(const std::string& path, const std::string& json)
             << " (in the domain: " << cells << ")\n"
             << "  dihedral angles: min " << amin << ", max " << amax << " degrees\n"
             << "  edge length ratio: min " << emin << ", max " << emax << "\n"
-            << "  radius ratio (3 for a regular tetrahedron): min " << rmin << ", max " << rmax << "\n"
+            << "  circumradius over inradius R/r (3 for a regular tetrahedron): min " << rmin << ", max " << rmax << "\n"
+            << "  radius ratio 3r/R (1 for a regular tetrahedron): min " << 3 / rmax << ", max " << 3 / rmin << "\n"
             << "  dihedral angle histogram (5-degree bins from 0):";
   for(auto n : angle_histogram) std::cout << ' ' << n;
   std::cout << "\n  edge length ratio histogram (0.25 bins from 1):";
@@ -264,7 +266,8 @@ inline int run_stats(const std::string& path, const std::string& json)
                           {"cells_in_domain", cells},
                           {"dihedral_angle", {{"min", amin}, {"max", amax}, {"bin_start", 0}, {"bin_width", 5}, {"histogram", angle_histogram}}},
                           {"edge_length_ratio", {{"min", emin}, {"max", emax}, {"bin_start", 1}, {"bin_width", 0.25}, {"histogram", edge_histogram}}},
-                          {"radius_ratio", {{"min", rmin}, {"max", rmax}, {"bin_start", 3}, {"bin_width", 1}, {"histogram", radius_histogram}}}};
+                          {"circumradius_over_inradius", {{"min", rmin}, {"max", rmax}, {"bin_start", 3}, {"bin_width", 1}, {"histogram", radius_histogram}}},
+                          {"radius_ratio", {{"min", 3 / rmax}, {"max", 3 / rmin}}}};
       out << j.dump(1) << '\n';
     });
     files.commit();

@@ -38,6 +38,7 @@ struct Mesh_with_fields
   std::vector<std::string> field_names;                 ///< names of the point fields
   std::vector<std::vector<double>> fields;              ///< `fields[f][point]`
   int first_index = 1;                                  ///< the first number of TetGen files (0 or 1)
+  std::vector<std::size_t> point_tags;                  ///< the file's own number of each point (Gmsh node tags), or empty
   std::vector<std::array<std::size_t, 4>> cells;        ///< tetrahedra, by point number
   std::vector<int> cell_references;                     ///< subdomain of each cell (empty: all in subdomain 1)
   std::vector<std::array<std::size_t, 3>> triangles;    ///< constrained (boundary) triangles
@@ -95,6 +96,18 @@ std::size_t number_of_mesh_cells(const Tr& tr)
 }
 
 /// \ingroup PkgEdgeSwapping3Domains
+/// The number of finite vertices of `tr` that are the mesh's own (not added
+/// by `build_numbered_mesh()` to complete its domain).
+template <class Tr>
+std::size_t number_of_mesh_vertices(const Tr& tr)
+{
+  if(!is_completed_domain(tr)) return tr.number_of_vertices();
+  std::size_t n = 0;
+  for(auto v : tr.finite_vertex_handles()) n += v->info() < std::size_t(-1) / 2;
+  return n;
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
 /// Builds in `tr` (empty) the tetrahedra of the mesh `mesh`, each vertex
 /// numbered by its point, each cell with its subdomain (1 without
 /// references, 0 for the infinite cells), and the boundary references of the
@@ -110,6 +123,8 @@ std::size_t number_of_mesh_cells(const Tr& tr)
 /// exactly as one triangulation of the box. The boundary of the domain
 /// then separates cells of different subdomains, so no operation removes it;
 /// `numbered_mesh_snapshot()` writes back the domain's cells alone.
+/// Points that no tetrahedron uses (those of lines or surfaces meshed alone)
+/// are kept in the mesh, out of the triangulation.
 ///
 /// Returns an empty string, or what is wrong with the mesh (see
 /// `build_triangulation_from_cells()`; a facet of more than two tetrahedra;
@@ -126,58 +141,89 @@ std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
     if(r == Domain_cell_info::completion)
       return "the subdomain reference " + std::to_string(r) + " is reserved (the package's mark of cells outside "
              "the domain): renumber the subdomains";
+  // Points that no tetrahedron uses (of lines or surfaces meshed alone)
+  // stay in the mesh, out of the triangulation: its point k is `own[k]`.
+  const std::vector<Tr_point>* points = &mesh.points;
+  const std::vector<std::array<std::size_t, 4>>* tetrahedra = &mesh.cells;
+  std::vector<Tr_point> used_points;
+  std::vector<std::array<std::size_t, 4>> renumbered;
+  std::vector<std::size_t> own, number(mesh.points.size(), std::size_t(-1));
+  for(const auto& t : mesh.cells)
+    for(auto v : t)
+      if(v < number.size()) number[v] = 0;
+  if(!mesh.cells.empty() && std::count(number.begin(), number.end(), std::size_t(-1)) > 0)
+  {
+    for(std::size_t v = 0; v < number.size(); ++v)
+      if(number[v] == 0)
+      {
+        number[v] = own.size();
+        own.push_back(v);
+        used_points.push_back(mesh.points[v]);
+      }
+    renumbered = mesh.cells;
+    for(auto& t : renumbered)
+      for(auto& v : t) v = v < number.size() ? number[v] : std::size_t(-1) / 2; // out of range: refused below
+    points = &used_points;
+    tetrahedra = &renumbered;
+  }
+  else
+    for(std::size_t v = 0; v < number.size(); ++v) number[v] = v;
+
   bool boundary_shape = false;
   std::string problem =
-      internal::build_triangulation_from_cells(tr, mesh.points, mesh.cells, vertices, cells, 100000, &boundary_shape);
-  std::size_t added = 0;
+      internal::build_triangulation_from_cells(tr, *points, *tetrahedra, vertices, cells, 100000, &boundary_shape);
   if(!problem.empty())
   {
     if(!boundary_shape) return problem;
     // Not the triangulation of its convex hull: fill the outside.
-    internal::Exterior_fill fill = internal::fill_exterior(mesh.points, mesh.cells);
+    internal::Exterior_fill fill = internal::fill_exterior(*points, *tetrahedra);
     if(!fill.problem.empty()) return fill.problem;
-    std::vector<Tr_point> points(mesh.points.begin(), mesh.points.end());
-    for(const auto& p : fill.added_points) points.emplace_back(p[0], p[1], p[2]);
-    std::vector<std::array<std::size_t, 4>> all = mesh.cells;
+    std::vector<Tr_point> all_points(points->begin(), points->end());
+    for(const auto& p : fill.added_points) all_points.emplace_back(p[0], p[1], p[2]);
+    std::vector<std::array<std::size_t, 4>> all = *tetrahedra;
     // The added cells take the orientation of the domain's.
     auto orientation = tr.geom_traits().orientation_3_object();
     auto sign = [&](const std::array<std::size_t, 4>& t) {
-      return orientation(points[t[0]], points[t[1]], points[t[2]], points[t[3]]);
+      return orientation(all_points[t[0]], all_points[t[1]], all_points[t[2]], all_points[t[3]]);
     };
-    const Orientation domain_sign = sign(mesh.cells.front());
+    const Orientation domain_sign = sign(tetrahedra->front());
     for(auto t : fill.cells)
     {
       if(sign(t) != domain_sign) std::swap(t[0], t[1]);
       all.push_back(t);
     }
-    problem = internal::build_triangulation_from_cells(tr, points, all, vertices, cells, 100000);
+    problem = internal::build_triangulation_from_cells(tr, all_points, all, vertices, cells, 100000);
     if(!problem.empty())
       return "the domain's boundary could not be kept while filling its outside (" + problem +
              "): the tetrahedra overlap, or the mesh is not conforming";
-    added = fill.added_points.size();
+    for(std::size_t k = tetrahedra->size(); k < cells.size(); ++k)
+      cells[k]->info().subdomain = Domain_cell_info::completion;
   }
-  const std::size_t own = mesh.points.size();
-  for(std::size_t k = 0; k < vertices.size(); ++k) vertices[k]->info() = k < own ? k : std::size_t(-1) - (k - own);
+  const std::size_t n = points->size();
+  for(std::size_t k = 0; k < vertices.size(); ++k)
+    vertices[k]->info() = k >= n ? std::size_t(-1) - (k - n) : own.empty() ? k : own[k];
   const bool one_subdomain = mesh.cell_references.empty();
   for(auto c : tr.all_cell_handles())
   {
+    const bool added = c->info().subdomain == Domain_cell_info::completion;
     c->info() = Domain_cell_info();
     if(tr.is_infinite(c)) c->info().subdomain = 0;
+    else if(added) c->info().subdomain = Domain_cell_info::completion;
     else if(one_subdomain) c->info().subdomain = 1;
   }
   // The cells come in the order of the tetrahedra read (a jump in memory
   // for each, in the Hilbert order of a large mesh: only when needed).
   if(!one_subdomain)
     for(std::size_t k = 0; k < mesh.cells.size(); ++k) cells[k]->info().subdomain = mesh.cell_references[k];
-  if(added > 0)
-    for(std::size_t k = mesh.cells.size(); k < cells.size(); ++k) cells[k]->info().subdomain = Domain_cell_info::completion;
   for(std::size_t k = 0; k < mesh.triangles.size(); ++k)
   {
     const auto& t = mesh.triangles[k];
     typename Tr::Cell_handle c;
     int i, j, l;
-    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-       !tr.is_facet(vertices[t[0]], vertices[t[1]], vertices[t[2]], c, i, j, l))
+    auto on_tetrahedra = [&](std::size_t v) { return v < number.size() && number[v] < n; };
+    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !on_tetrahedra(t[0]) || !on_tetrahedra(t[1]) ||
+       !on_tetrahedra(t[2]) ||
+       !tr.is_facet(vertices[number[t[0]]], vertices[number[t[1]]], vertices[number[t[2]]], c, i, j, l))
       return "triangle " + std::to_string(k + 1) + " is not a facet of the tetrahedra";
     const int f = 6 - i - j - l;
     c->info().facet_reference[f] = mesh.triangle_references[k];
@@ -259,6 +305,7 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
   out.field_names = mesh.field_names;
   out.fields = mesh.fields;
   out.first_index = mesh.first_index;
+  out.point_tags = mesh.point_tags;
   out.is_mesh = true;
   out.has_references = mesh.has_references;
   out.cells.reserve(tr.number_of_finite_cells());
@@ -293,12 +340,13 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
 
 /// \ingroup PkgEdgeSwapping3Domains
 /// Adds to `mesh` the quality of each of its cells as cell fields
-/// (`edge_length_ratio`, `radius_ratio`, `min_dihedral_angle`,
-/// `max_dihedral_angle`), for viewers such as ParaView (VTK files keep cell fields).
+/// (`edge_length_ratio`, `circumradius_over_inradius` R/r, `radius_ratio`
+/// 3r/R, `min_dihedral_angle`, `max_dihedral_angle`), for viewers such as
+/// ParaView (VTK files keep cell fields).
 template <class Point>
 void add_quality_cell_fields(Mesh_with_fields<Point>& mesh)
 {
-  std::array<std::vector<double>, 4> q;
+  std::array<std::vector<double>, 5> q;
   for(auto& values : q) values.reserve(mesh.cells.size());
   for(const auto& t : mesh.cells)
   {
@@ -307,13 +355,16 @@ void add_quality_cell_fields(Mesh_with_fields<Point>& mesh)
     const Point& d = mesh.points[t[2]];
     const Point& e = mesh.points[t[3]];
     const auto angles = dihedral_angles(a, b, d, e);
+    const double radii = circumradius_over_inradius(a, b, d, e);
     q[0].push_back(edge_length_ratio(a, b, d, e));
-    q[1].push_back(radius_ratio(a, b, d, e));
-    q[2].push_back(*std::min_element(angles.begin(), angles.end()));
-    q[3].push_back(*std::max_element(angles.begin(), angles.end()));
+    q[1].push_back(radii);
+    q[2].push_back(3 / radii);
+    q[3].push_back(*std::min_element(angles.begin(), angles.end()));
+    q[4].push_back(*std::max_element(angles.begin(), angles.end()));
   }
-  const char* names[4] = {"edge_length_ratio", "radius_ratio", "min_dihedral_angle", "max_dihedral_angle"};
-  for(int k = 0; k < 4; ++k)
+  const char* names[5] = {"edge_length_ratio", "circumradius_over_inradius", "radius_ratio", "min_dihedral_angle",
+                          "max_dihedral_angle"};
+  for(int k = 0; k < 5; ++k)
   {
     mesh.cell_field_names.push_back(names[k]);
     mesh.cell_fields.push_back(std::move(q[k]));

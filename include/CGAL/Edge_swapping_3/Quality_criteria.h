@@ -123,7 +123,7 @@ struct Aspect_ratio
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
-    return definition == EDGE_LENGTH_RATIO ? edge_length_ratio(a, b, c, d) : radius_ratio(a, b, c, d);
+    return definition == EDGE_LENGTH_RATIO ? edge_length_ratio(a, b, c, d) : circumradius_over_inradius(a, b, c, d);
   }
 };
 
@@ -136,7 +136,7 @@ struct Normalized_radius_ratio
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
-    return 3 / radius_ratio(a, b, c, d);
+    return 3 / circumradius_over_inradius(a, b, c, d);
   }
 };
 

@@ -30,7 +30,7 @@ struct Mesh_statistics
   double min_dihedral_angle = HUGE_VAL; ///< degrees
   double max_dihedral_angle = 0;        ///< degrees
   double max_edge_length_ratio = 0;     ///< longest over shortest edge, worst cell
-  double max_radius_ratio = 0;          ///< circumradius over inradius, worst cell
+  double max_circumradius_over_inradius = 0;          ///< circumradius over inradius, worst cell
 };
 
 /// \ingroup PkgEdgeSwapping3Functions
@@ -93,7 +93,7 @@ Mesh_statistics mesh_statistics(const Tr& tr, const NamedParameters& np = CGAL::
       s.max_dihedral_angle = (std::max)(s.max_dihedral_angle, a);
     }
     s.max_edge_length_ratio = (std::max)(s.max_edge_length_ratio, edge_length_ratio(p0, p1, p2, p3));
-    s.max_radius_ratio = (std::max)(s.max_radius_ratio, radius_ratio(p0, p1, p2, p3));
+    s.max_circumradius_over_inradius = (std::max)(s.max_circumradius_over_inradius, circumradius_over_inradius(p0, p1, p2, p3));
   }
   return s;
 }
@@ -125,7 +125,7 @@ struct Quality_histograms
   std::size_t cells = 0;                                       ///< cells in the domain
   Quality_histogram dihedral_angle{HUGE_VAL, -HUGE_VAL, 0, 5, std::vector<std::size_t>(36)};     ///< degrees, 5-degree bins
   Quality_histogram edge_length_ratio{HUGE_VAL, -HUGE_VAL, 1, 0.25, std::vector<std::size_t>(40)}; ///< 1 to 11
-  Quality_histogram radius_ratio{HUGE_VAL, -HUGE_VAL, 3, 1, std::vector<std::size_t>(40)};     ///< 3 (regular) to 43
+  Quality_histogram circumradius_over_inradius{HUGE_VAL, -HUGE_VAL, 3, 1, std::vector<std::size_t>(40)};     ///< 3 (regular) to 43
 };
 
 /// \ingroup PkgEdgeSwapping3Functions
@@ -154,7 +154,7 @@ Quality_histograms quality_histograms(const Tr& tr, const NamedParameters& np = 
     const auto& p3 = internal::bare_point(c->vertex(3)->point());
     for(double a : dihedral_angles(p0, p1, p2, p3)) h.dihedral_angle.add(a);
     h.edge_length_ratio.add(Edge_swapping_3::edge_length_ratio(p0, p1, p2, p3));
-    h.radius_ratio.add(Edge_swapping_3::radius_ratio(p0, p1, p2, p3));
+    h.circumradius_over_inradius.add(Edge_swapping_3::circumradius_over_inradius(p0, p1, p2, p3));
   }
   return h;
 }

@@ -134,7 +134,7 @@ double edge_length_ratio(const Point& p0, const Point& p1, const Point& p2, cons
 /// Circumradius over inradius (the paper's second aspect ratio; 3 for a
 /// regular tetrahedron; the largest double for one too flat for double precision).
 template <class Point>
-double radius_ratio(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
+double circumradius_over_inradius(const Point& p0, const Point& p1, const Point& p2, const Point& p3)
 {
   using namespace internal;
   const auto v = to_vecs(p0, p1, p2, p3);

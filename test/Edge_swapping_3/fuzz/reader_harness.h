@@ -80,6 +80,7 @@ inline Outcome run(Reader reader, std::string_view data)
     {
     case Reader::node:
     case Reader::medit:
+    case Reader::msh:
     case Reader::vtu:
       internal::build_mesh(name, ES::IO::mesh_with_fields_from_text<Point>(name, data), o);
       break;

@@ -16,7 +16,7 @@ struct Outcome
   std::string message; ///< the error, when rejected
 };
 
-enum class Reader { node, ele, medit, vtu, topcom, case_json, results, streamed, trace };
+enum class Reader { node, ele, medit, msh, vtu, topcom, case_json, results, streamed, trace };
 
 inline const char* reader_name(Reader r)
 {
@@ -25,6 +25,7 @@ inline const char* reader_name(Reader r)
   case Reader::node: return "node";
   case Reader::ele: return "ele";
   case Reader::medit: return "medit";
+  case Reader::msh: return "msh";
   case Reader::vtu: return "vtu";
   case Reader::topcom: return "topcom";
   case Reader::case_json: return "case_json";
@@ -42,6 +43,7 @@ inline std::string file_name(Reader r)
   case Reader::node: return "fuzz.node";
   case Reader::ele: return "fuzz.ele";
   case Reader::medit: return "fuzz.mesh";
+  case Reader::msh: return "fuzz.msh";
   case Reader::vtu: return "fuzz.vtu";
   case Reader::topcom: return "TOPCOM output";
   case Reader::case_json: return "fuzz.json";

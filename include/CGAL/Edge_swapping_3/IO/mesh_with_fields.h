@@ -1,18 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A `Mesh_with_fields` read from and written to the three formats the
-// package knows, chosen by the file's extension: TetGen .node (a point set)
-// and .ele (a mesh, with the .node beside it), Medit .mesh (subdomains and
-// boundary triangles) and VTK .vtu (point and cell fields).
+// A `Mesh_with_fields` read from and written to the formats the package
+// knows, chosen by the file's extension: TetGen .node (a point set) and .ele
+// (a mesh, with the .node beside it), Medit .mesh and Gmsh .msh (subdomains
+// and boundary triangles) and VTK .vtu (point and cell fields).
 
 #ifndef CGAL_EDGE_SWAPPING_3_IO_MESH_WITH_FIELDS_H
 #define CGAL_EDGE_SWAPPING_3_IO_MESH_WITH_FIELDS_H
 
+#include <CGAL/Edge_swapping_3/IO/gmsh.h>
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <CGAL/Edge_swapping_3/IO/vtu.h>
 #include <CGAL/Edge_swapping_3/Mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -36,6 +38,32 @@ inline bool has_extension(const std::string& path, const std::string& end)
 /// \ingroup PkgEdgeSwapping3IO
 /// `path` without its extension.
 inline std::string path_stem(const std::string& path) { return path.substr(0, path.rfind('.')); }
+
+namespace internal {
+
+/// Drops the triangles with a point that no tetrahedron has: those of a
+/// surface meshed alone, bounding no volume (Gmsh writes them), which are not
+/// part of the volume mesh.
+template <class Point>
+void drop_triangles_off_the_tetrahedra(Mesh_with_fields<Point>& m, std::size_t points)
+{
+  std::vector<char> used(points, 0);
+  for(const auto& t : m.cells)
+    for(auto v : t)
+      if(v < points) used[v] = 1;
+  std::size_t kept = 0;
+  for(std::size_t k = 0; k < m.triangles.size(); ++k)
+  {
+    const auto& t = m.triangles[k];
+    if(!(t[0] < points && t[1] < points && t[2] < points && used[t[0]] && used[t[1]] && used[t[2]])) continue;
+    m.triangles[kept] = t;
+    m.triangle_references[kept++] = m.triangle_references[k];
+  }
+  m.triangles.resize(kept);
+  m.triangle_references.resize(kept);
+}
+
+} // namespace internal
 
 /// \ingroup PkgEdgeSwapping3IO
 /// The mesh or point set in `text`, the content of the file `path` (its
@@ -77,6 +105,20 @@ Mesh_with_fields<Point> mesh_with_fields_from_text(const std::string& path, std:
     in.triangle_references = std::move(m.triangle_references);
     in.is_mesh = in.has_references = true;
     if(in.cells.empty()) throw Input_error(path + ": no Tetrahedra");
+    internal::drop_triangles_off_the_tetrahedra(in, coordinates.size());
+  }
+  else if(has_extension(path, ".msh"))
+  {
+    Gmsh_mesh m = read_gmsh_text(path, text);
+    coordinates = std::move(m.points);
+    in.point_tags = std::move(m.point_tags);
+    in.cells = std::move(m.tetrahedra);
+    in.cell_references = std::move(m.tetrahedron_references);
+    in.triangles = std::move(m.triangles);
+    in.triangle_references = std::move(m.triangle_references);
+    in.is_mesh = in.has_references = true;
+    if(in.cells.empty()) throw Input_error(path + ": no linear tetrahedra (element type 4)");
+    internal::drop_triangles_off_the_tetrahedra(in, coordinates.size());
   }
   else if(has_extension(path, ".vtu"))
   {
@@ -105,7 +147,7 @@ Mesh_with_fields<Point> mesh_with_fields_from_text(const std::string& path, std:
       }
   }
   else
-    throw std::invalid_argument("input '" + path + "' is not a .node, .ele, .mesh or .vtu file");
+    throw std::invalid_argument("input '" + path + "' is not a .node, .ele, .mesh, .msh or .vtu file");
   for(std::size_t f = 0; f < in.fields.size(); ++f)
     for(std::size_t k = 0; k < in.fields[f].size(); ++k)
       if(!(std::abs(in.fields[f][k]) <= max_field_value))
@@ -122,8 +164,8 @@ template <class Point>
 Mesh_with_fields<Point> read_mesh_with_fields(const std::string& path)
 {
   if(!has_extension(path, ".node") && !has_extension(path, ".ele") && !has_extension(path, ".mesh") &&
-     !has_extension(path, ".vtu"))
-    throw std::invalid_argument("input '" + path + "' is not a .node, .ele, .mesh or .vtu file");
+     !has_extension(path, ".msh") && !has_extension(path, ".vtu"))
+    throw std::invalid_argument("input '" + path + "' is not a .node, .ele, .mesh, .msh or .vtu file");
   if(has_extension(path, ".ele"))
   {
     const std::string node_text = read_text_file(path_stem(path) + ".node");
@@ -134,13 +176,21 @@ Mesh_with_fields<Point> read_mesh_with_fields(const std::string& path)
 
 /// \ingroup PkgEdgeSwapping3IO
 /// The files that writing a mesh to `path` makes: `Y.ele` comes with `Y.node`.
-/// Throws `std::invalid_argument` unless `path` is an `.ele`, `.mesh` or `.vtu` file.
+/// Throws `std::invalid_argument` unless `path` is an `.ele`, `.mesh`, `.msh` or `.vtu` file.
 inline std::vector<std::string> mesh_file_paths(const std::string& path)
 {
   if(has_extension(path, ".ele")) return {path, path_stem(path) + ".node"};
-  if(has_extension(path, ".mesh") || has_extension(path, ".vtu")) return {path};
-  throw std::invalid_argument("output '" + path + "' is not an .ele, .mesh or .vtu file");
+  if(has_extension(path, ".mesh") || has_extension(path, ".msh") || has_extension(path, ".vtu")) return {path};
+  throw std::invalid_argument("output '" + path + "' is not an .ele, .mesh, .msh or .vtu file");
 }
+
+/// \ingroup PkgEdgeSwapping3IO
+/// How `write_mesh_with_fields()` encodes the formats that have choices.
+struct Mesh_file_options
+{
+  Gmsh_format msh = MSH_4_1_ASCII; ///< `.msh`: version and encoding
+  Vtu_encoding vtu = VTU_ASCII;    ///< `.vtu`: ASCII or binary (zlib)
+};
 
 /// \ingroup PkgEdgeSwapping3IO
 /// Writes `mesh` in the format of `path`: for each file of
@@ -149,12 +199,15 @@ inline std::vector<std::string> mesh_file_paths(const std::string& path)
 /// (and throws for a value that is not finite). So a caller chooses how the
 /// files are opened (all or nothing, in memory). `Y.ele` with `Y.node`
 /// (point fields as attributes), `Y.mesh` (Medit: subdomains, boundary
-/// triangles) or `Y.vtu` (point fields and cell fields).
+/// triangles), `Y.msh` (Gmsh: the same as physical tags, node tags kept;
+/// version and encoding from `options`) or `Y.vtu` (point fields and cell fields).
 /// \param path the file to write; its extension chooses the format
 /// \param mesh the mesh (for example `numbered_mesh_snapshot()` of a triangulation)
 /// \param add_file a callable `void(const std::string&, std::function<void(std::ostream&)>)`
+/// \param options the encoding of the formats that have choices
 template <class Point, class Add_file>
-void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mesh, Add_file add_file)
+void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mesh, Add_file add_file,
+                            const Mesh_file_options& options = Mesh_file_options())
 {
   mesh_file_paths(path); // throws for an unknown format
   auto m = std::make_shared<const Mesh_with_fields<Point>>(std::move(mesh));
@@ -186,13 +239,30 @@ void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mes
                medit.triangle_references = m->triangle_references;
                write_medit_file(out, medit);
              }));
+  else if(has_extension(path, ".msh"))
+    add_file(path, std::function<void(std::ostream&)>([m, coordinates, options](std::ostream& out) {
+               Gmsh_mesh gmsh;
+               gmsh.points = coordinates();
+               // Points added since reading take the tags after the largest one.
+               if(!m->point_tags.empty())
+               {
+                 gmsh.point_tags = m->point_tags;
+                 std::size_t next = *std::max_element(gmsh.point_tags.begin(), gmsh.point_tags.end());
+                 while(gmsh.point_tags.size() < gmsh.points.size()) gmsh.point_tags.push_back(++next);
+               }
+               gmsh.tetrahedra = m->cells;
+               gmsh.tetrahedron_references = m->cell_references;
+               gmsh.triangles = m->triangles;
+               gmsh.triangle_references = m->triangle_references;
+               write_gmsh_file(out, gmsh, options.msh);
+             }));
   else
-    add_file(path, std::function<void(std::ostream&)>([m, coordinates](std::ostream& out) {
+    add_file(path, std::function<void(std::ostream&)>([m, coordinates, options](std::ostream& out) {
                Named_fields point_fields, cell_fields;
                for(std::size_t f = 0; f < m->fields.size(); ++f) point_fields.emplace_back(m->field_names[f], m->fields[f]);
                for(std::size_t f = 0; f < m->cell_fields.size(); ++f)
                  cell_fields.emplace_back(m->cell_field_names[f], m->cell_fields[f]);
-               write_vtu_file(out, coordinates(), m->cells, point_fields, cell_fields);
+               write_vtu_file(out, coordinates(), m->cells, point_fields, cell_fields, options.vtu);
              }));
 }
 

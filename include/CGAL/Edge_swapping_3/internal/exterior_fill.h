@@ -9,6 +9,10 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_EXTERIOR_FILL_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_EXTERIOR_FILL_H
 
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/enum.h>
+#include <CGAL/intersections.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <algorithm>
@@ -96,6 +100,76 @@ inline std::string boundary_and_parts(const std::vector<std::array<std::size_t, 
   return std::string();
 }
 
+/// Whether the triangles `a` and `b` of `points` (sorted point numbers, of a
+/// closed boundary) meet in more than the points and edge they share: exact.
+template <class Point>
+bool triangles_overlap(const std::vector<Point>& points, const std::array<std::uint32_t, 3>& a,
+                       const std::array<std::uint32_t, 3>& b)
+{
+  typedef typename CGAL::Kernel_traits<Point>::Kernel K;
+  typedef typename K::Triangle_3 Triangle;
+  typedef typename K::Segment_3 Segment;
+  std::vector<std::uint32_t> shared, only_a, only_b;
+  for(auto v : a) (std::find(b.begin(), b.end(), v) != b.end() ? shared : only_a).push_back(v);
+  for(auto v : b)
+    if(std::find(a.begin(), a.end(), v) == a.end()) only_b.push_back(v);
+  const Triangle ta(points[a[0]], points[a[1]], points[a[2]]), tb(points[b[0]], points[b[1]], points[b[2]]);
+  if(shared.empty()) return CGAL::do_intersect(ta, tb);
+  if(shared.size() == 2)
+  {
+    // Across their common edge: only a fold (coplanar, on one side) overlaps.
+    const Point &u = points[shared[0]], &v = points[shared[1]], &p = points[only_a[0]], &q = points[only_b[0]];
+    return CGAL::orientation(u, v, p, q) == CGAL::COPLANAR && CGAL::coplanar_orientation(u, v, p, q) == CGAL::POSITIVE;
+  }
+  if(shared.size() == 3) return true;
+  // One common point w: an opposite edge meets the other triangle, or an
+  // edge from w runs into the other triangle's angle at w (in its plane).
+  const Point& w = points[shared[0]];
+  auto enters = [&](const Point& x, const Point& r, const Point& s) { // w->x into the angle r w s
+    if(CGAL::orientation(w, r, s, x) != CGAL::COPLANAR) return false;
+    const CGAL::Orientation by_r = CGAL::coplanar_orientation(w, r, s, x), by_s = CGAL::coplanar_orientation(w, s, r, x);
+    return (by_r == CGAL::POSITIVE && by_s == CGAL::POSITIVE) || (by_r == CGAL::COLLINEAR && by_s == CGAL::POSITIVE) ||
+           (by_s == CGAL::COLLINEAR && by_r == CGAL::POSITIVE);
+  };
+  const Point &a1 = points[only_a[0]], &a2 = points[only_a[1]], &b1 = points[only_b[0]], &b2 = points[only_b[1]];
+  return CGAL::do_intersect(Segment(a1, a2), tb) || CGAL::do_intersect(Segment(b1, b2), ta) || enters(a1, b1, b2) ||
+         enters(a2, b1, b2) || enters(b1, a1, a2) || enters(b2, a1, a2);
+}
+
+/// An empty string if the boundary triangles `boundary` of `points` meet
+/// only at their common points and edges; else the first two that overlap.
+/// Exact; candidate pairs by CGAL's intersection of boxes.
+template <class Point>
+std::string boundary_overlap(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& boundary)
+{
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t> Box;
+  std::vector<Box> boxes;
+  boxes.reserve(boundary.size());
+  for(std::size_t k = 0; k < boundary.size(); ++k)
+  {
+    const auto& t = boundary[k];
+    boxes.emplace_back(points[t[0]].bbox() + points[t[1]].bbox() + points[t[2]].bbox(), k);
+  }
+  std::string found;
+  try
+  {
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+      const auto &a = boundary[x.info()], &b = boundary[y.info()];
+      if(!triangles_overlap(points, a, b)) return;
+      auto name = [](const std::array<std::uint32_t, 3>& t) {
+        return std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
+      };
+      found = "the boundary intersects itself: its triangles of points " + name((std::min)(a, b)) + " and " +
+              name((std::max)(a, b)) + " overlap (tetrahedra overlap, or the mesh is not conforming)";
+      throw 0; // one is enough
+    });
+  }
+  catch(int)
+  {
+  }
+  return found;
+}
+
 /// Fills the outside of the domain that the tetrahedra `cells` of `points`
 /// mesh, up to a box around the points (its corners are the first added
 /// points), keeping the domain's boundary: the returned tetrahedra and
@@ -110,6 +184,10 @@ Exterior_fill fill_exterior(const std::vector<Point>& points, const std::vector<
   fill.problem = boundary_and_parts(cells, boundary, part, fill.components);
   if(!fill.problem.empty()) return fill;
   fill.boundary_facets = boundary.size();
+  // TetGen's library crashes when it gives up (its error path frees its
+  // memory twice): a boundary that overlaps itself is refused here first.
+  fill.problem = boundary_overlap(points, boundary);
+  if(!fill.problem.empty()) return fill;
 #ifndef CGAL_EDGE_SWAPPING_3_HAS_TETGEN
   fill.problem = "the mesh is not a triangulation of the convex hull of its points (a non-convex domain, cavities "
                  "or several parts), and completing it needs TetGen's library: build with libtet1.5-dev";

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Benchmark (not a test): meshes nobody here wrote (real_meshes.sh makes them
+// from Gmsh's tutorials and demos, TetGen's example and CGAL's sample mesh),
+// each optimized by ours and by the peers (quality_peers.h), all measured by
+// one function on the domain's cells. Ours: MinMax with flips only, MinMax
+// with the topological operations, the dihedral sine with smoothing. Peers:
+// TetGen 1.5's optimizer (flips, then with smoothing), CGAL's
+// Tetrahedral_remeshing flip and smooth steps, Gmsh's optimizer. Every
+// output must keep the input's boundary and interface triangles (checked)
+// and be a valid mesh (rebuilt by the package).
+//
+//   benchmark_real_meshes MESH...      (.mesh, .msh, .vtu or .ele)
+//
+// Columns: smallest / largest dihedral angle, cells below 10 and above 165
+// degrees, the 1st percentile of the radius ratio 3r/R, cells, seconds of
+// the optimizer alone (ours: the library call, as for the peers).
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/edge_swapping_3.h>
+#include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
+#include "benchmark_common.h"
+#include "quality_peers.h"
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <unistd.h>
+
+typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
+typedef ES::Mesh_with_fields<K::Point_3> Mesh;
+
+namespace {
+
+struct Quality_row
+{
+  double smallest = 180, largest = 0, radius_ratio_1st_percentile = 0;
+  std::size_t below_10 = 0, above_165 = 0, cells = 0;
+};
+
+// The one measure of every row: the cells of the domain (subdomain not 0).
+Quality_row quality(const quality_peers::Cell_mesh& m)
+{
+  Quality_row q;
+  std::vector<double> ratios;
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+  {
+    if(m.subdomains[k] == 0) continue;
+    const auto& t = m.cells[k];
+    const auto angles = ES::dihedral_angles(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
+    const double lo = *std::min_element(angles.begin(), angles.end());
+    const double hi = *std::max_element(angles.begin(), angles.end());
+    q.smallest = std::min(q.smallest, lo);
+    q.largest = std::max(q.largest, hi);
+    q.below_10 += lo < 10;
+    q.above_165 += hi > 165;
+    ratios.push_back(3 / ES::circumradius_over_inradius(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
+    ++q.cells;
+  }
+  std::sort(ratios.begin(), ratios.end());
+  if(!ratios.empty()) q.radius_ratio_1st_percentile = ratios[ratios.size() / 100];
+  return q;
+}
+
+// The triangles between two subdomains or on the boundary, as sorted triples.
+std::set<std::array<std::size_t, 3>> kept_triangles(const quality_peers::Cell_mesh& m)
+{
+  quality_peers::Cell_mesh domain;
+  domain.points = m.points;
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+    if(m.subdomains[k] != 0)
+    {
+      domain.cells.push_back(m.cells[k]);
+      domain.subdomains.push_back(m.subdomains[k]);
+    }
+  const auto b = quality_peers::boundary_triangles(domain);
+  return {b.begin(), b.end()};
+}
+
+// An output rebuilt by the package (which checks it exactly), its boundary
+// compared with the input's, and measured.
+void row(const std::string& name, const quality_peers::Cell_mesh& input, const quality_peers::Peer_result& r)
+{
+  if(!r.error.empty())
+  {
+    std::printf("  %-34s failed: %s\n", name.c_str(), r.error.c_str());
+    return;
+  }
+  Mesh m;
+  m.is_mesh = m.has_references = true;
+  m.points = r.mesh.points;
+  for(std::size_t k = 0; k < r.mesh.cells.size(); ++k)
+    if(r.mesh.subdomains[k] != 0)
+    {
+      m.cells.push_back(r.mesh.cells[k]);
+      m.cell_references.push_back(r.mesh.subdomains[k]);
+    }
+  Triangulation tr;
+  const std::string problem = ES::build_numbered_mesh(tr, m);
+  const bool same_boundary = kept_triangles(r.mesh) == kept_triangles(input);
+  const Quality_row q = quality(r.mesh);
+  std::printf("  %-34s %6.2f / %6.2f %6zu %6zu %7.4f %8zu %8.2f %s%s\n", name.c_str(), q.smallest, q.largest,
+              q.below_10, q.above_165, q.radius_ratio_1st_percentile, q.cells, r.seconds,
+              problem.empty() ? "" : ("INVALID: " + problem).c_str(), same_boundary ? "" : " BOUNDARY CHANGED");
+  std::fflush(stdout);
+}
+
+// Ours, on the package's completed triangulation of the mesh.
+template <class Criterion>
+quality_peers::Peer_result ours(const Mesh& mesh, const Criterion& criterion, unsigned operations)
+{
+  quality_peers::Peer_result r;
+  Triangulation tr;
+  r.error = ES::build_numbered_mesh(tr, mesh);
+  if(!r.error.empty()) return r;
+  CGAL::Real_timer timer;
+  timer.start();
+  ES::with_mesh_constraints(tr, mesh, [&](const auto& constraints) {
+    return ES::improve_worst_tetrahedra(tr, criterion,
+                                        ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints)));
+  });
+  r.seconds = timer.time();
+  const Mesh out = ES::numbered_mesh_snapshot(tr, mesh);
+  r.mesh = {out.points, out.cells, out.cell_references};
+  return r;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  start_benchmark(argv);
+  if(argc < 2)
+  {
+    std::fprintf(stderr, "usage: benchmark_real_meshes MESH... (see real_meshes.sh)\n");
+    return 2;
+  }
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("edge_swapping_3_real_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  std::printf("%-36s %15s %6s %6s %7s %8s %8s\n", "", "min / max", "<10", ">165", "rr 1%", "cells", "seconds");
+  for(int a = 1; a < argc; ++a)
+  {
+    const std::string path = argv[a];
+    Mesh mesh;
+    try
+    {
+      mesh = ES::IO::read_mesh_with_fields<K::Point_3>(path);
+    }
+    catch(const std::exception& e)
+    {
+      std::printf("%s: unreadable: %s\n", path.c_str(), e.what());
+      continue;
+    }
+    if(mesh.cell_references.empty()) mesh.cell_references.assign(mesh.cells.size(), 1);
+    // Gmsh names volumes from 1; a reference 0 would be the outside for the peers.
+    for(int& r : mesh.cell_references)
+      if(r == 0) r = -1;
+    mesh.has_references = true;
+    const quality_peers::Cell_mesh input{mesh.points, mesh.cells, mesh.cell_references};
+    std::printf("%s: %zu points, %zu tetrahedra\n", std::filesystem::path(path).filename().c_str(),
+                mesh.points.size(), mesh.cells.size());
+    quality_peers::Peer_result as_read;
+    as_read.mesh = input;
+    row("input", input, as_read);
+    row("ours, MinMax, flips", input, ours(mesh, ES::Min_max_dihedral_angle_criterion(), ES::FLIPS));
+    row("ours, MinMax, topological", input, ours(mesh, ES::Min_max_dihedral_angle_criterion(), ES::TOPOLOGICAL_OPERATIONS));
+    row("ours, dihedral sine, all (smoothing)", input, ours(mesh, ES::Max_min_dihedral_sine_criterion(), ES::ALL_OPERATIONS));
+#ifdef EDGE_SWAPPING_3_WITH_TETGEN
+    row("TetGen 1.5 flips (140 deg)", input, quality_peers::tetgen_optimizer(input, 1, 140));
+    row("TetGen 1.5 flips + smoothing", input, quality_peers::tetgen_optimizer(input, 3, 140));
+#endif
+    row("CGAL remeshing flips + smooth (5)", input, quality_peers::cgal_remeshing(input, true, 5));
+    row("Gmsh 4.8 optimizer", input, quality_peers::gmsh_optimizer(input, "/usr/bin/python3", GMSH_SCRIPT, dir.string()));
+  }
+  std::filesystem::remove_all(dir);
+  return 0;
+}
