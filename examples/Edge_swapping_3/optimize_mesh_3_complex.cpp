@@ -21,7 +21,7 @@ namespace ES = CGAL::Edge_swapping_3;
 
 int shell(const K::Point_3& p)
 {
-  const double r2 = CGAL::to_double(CGAL::squared_distance(p, CGAL::ORIGIN));
+  const double r2 = CGAL::to_double(CGAL::squared_distance(p, K::Point_3(CGAL::ORIGIN)));
   return r2 < 1 && r2 > 0.25 ? 1 : 0;
 }
 

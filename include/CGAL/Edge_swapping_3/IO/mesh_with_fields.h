@@ -95,30 +95,26 @@ Mesh_with_fields<Point> mesh_with_fields_from_text(const std::string& path, std:
       in.is_mesh = true;
     }
   }
-  else if(has_extension(path, ".mesh"))
+  else if(has_extension(path, ".mesh") || has_extension(path, ".msh"))
   {
-    Medit_mesh m = read_medit_text(path, text);
-    coordinates = std::move(m.points);
-    in.cells = std::move(m.tetrahedra);
-    in.cell_references = std::move(m.tetrahedron_references);
-    in.triangles = std::move(m.triangles);
-    in.triangle_references = std::move(m.triangle_references);
-    in.is_mesh = in.has_references = true;
-    if(in.cells.empty()) throw Input_error(path + ": no Tetrahedra");
-    internal::drop_triangles_off_the_tetrahedra(in, coordinates.size());
-  }
-  else if(has_extension(path, ".msh"))
-  {
-    Gmsh_mesh m = read_gmsh_text(path, text);
-    coordinates = std::move(m.points);
-    in.point_tags = std::move(m.point_tags);
-    in.cells = std::move(m.tetrahedra);
-    in.cell_references = std::move(m.tetrahedron_references);
-    in.triangles = std::move(m.triangles);
-    in.triangle_references = std::move(m.triangle_references);
-    in.is_mesh = in.has_references = true;
-    if(in.cells.empty()) throw Input_error(path + ": no linear tetrahedra (element type 4)");
-    internal::drop_triangles_off_the_tetrahedra(in, coordinates.size());
+    // Medit and Gmsh files: tetrahedra and triangles with their references.
+    auto take = [&](auto&& m, const char* no_tetrahedra) {
+      coordinates = std::move(m.points);
+      in.cells = std::move(m.tetrahedra);
+      in.cell_references = std::move(m.tetrahedron_references);
+      in.triangles = std::move(m.triangles);
+      in.triangle_references = std::move(m.triangle_references);
+      in.is_mesh = in.has_references = true;
+      if(in.cells.empty()) throw Input_error(path + ": " + no_tetrahedra);
+      internal::drop_triangles_off_the_tetrahedra(in, coordinates.size());
+    };
+    if(has_extension(path, ".mesh")) take(read_medit_text(path, text), "no Tetrahedra");
+    else
+    {
+      Gmsh_mesh m = read_gmsh_text(path, text);
+      in.point_tags = std::move(m.point_tags);
+      take(std::move(m), "no linear tetrahedra (element type 4)");
+    }
   }
   else if(has_extension(path, ".vtu"))
   {

@@ -109,30 +109,34 @@ bool triangles_overlap(const std::vector<Point>& points, const std::array<std::u
   typedef typename CGAL::Kernel_traits<Point>::Kernel K;
   typedef typename K::Triangle_3 Triangle;
   typedef typename K::Segment_3 Segment;
+  const K kernel;
+  const auto orientation = kernel.orientation_3_object();
+  const auto coplanar_orientation = kernel.coplanar_orientation_3_object();
+  const auto do_intersect = kernel.do_intersect_3_object();
   std::vector<std::uint32_t> shared, only_a, only_b;
   for(auto v : a) (std::find(b.begin(), b.end(), v) != b.end() ? shared : only_a).push_back(v);
   for(auto v : b)
     if(std::find(a.begin(), a.end(), v) == a.end()) only_b.push_back(v);
   const Triangle ta(points[a[0]], points[a[1]], points[a[2]]), tb(points[b[0]], points[b[1]], points[b[2]]);
-  if(shared.empty()) return CGAL::do_intersect(ta, tb);
+  if(shared.empty()) return do_intersect(ta, tb);
   if(shared.size() == 2)
   {
     // Across their common edge: only a fold (coplanar, on one side) overlaps.
     const Point &u = points[shared[0]], &v = points[shared[1]], &p = points[only_a[0]], &q = points[only_b[0]];
-    return CGAL::orientation(u, v, p, q) == CGAL::COPLANAR && CGAL::coplanar_orientation(u, v, p, q) == CGAL::POSITIVE;
+    return orientation(u, v, p, q) == CGAL::COPLANAR && coplanar_orientation(u, v, p, q) == CGAL::POSITIVE;
   }
   if(shared.size() == 3) return true;
   // One common point w: an opposite edge meets the other triangle, or an
   // edge from w runs into the other triangle's angle at w (in its plane).
   const Point& w = points[shared[0]];
   auto enters = [&](const Point& x, const Point& r, const Point& s) { // w->x into the angle r w s
-    if(CGAL::orientation(w, r, s, x) != CGAL::COPLANAR) return false;
-    const CGAL::Orientation by_r = CGAL::coplanar_orientation(w, r, s, x), by_s = CGAL::coplanar_orientation(w, s, r, x);
+    if(orientation(w, r, s, x) != CGAL::COPLANAR) return false;
+    const CGAL::Orientation by_r = coplanar_orientation(w, r, s, x), by_s = coplanar_orientation(w, s, r, x);
     return (by_r == CGAL::POSITIVE && by_s == CGAL::POSITIVE) || (by_r == CGAL::COLLINEAR && by_s == CGAL::POSITIVE) ||
            (by_s == CGAL::COLLINEAR && by_r == CGAL::POSITIVE);
   };
   const Point &a1 = points[only_a[0]], &a2 = points[only_a[1]], &b1 = points[only_b[0]], &b2 = points[only_b[1]];
-  return CGAL::do_intersect(Segment(a1, a2), tb) || CGAL::do_intersect(Segment(b1, b2), ta) || enters(a1, b1, b2) ||
+  return do_intersect(Segment(a1, a2), tb) || do_intersect(Segment(b1, b2), ta) || enters(a1, b1, b2) ||
          enters(a2, b1, b2) || enters(b1, a1, a2) || enters(b2, a1, a2);
 }
 
