@@ -103,10 +103,11 @@ inline void write_vtu_file(std::ostream& stream, const std::vector<std::array<do
   };
   auto fields = [&](const char* tag, const Named_fields& f) {
     out << "<" << tag << ">\n";
-    for(const auto& [name, values] : f)
+    for(const auto& field : f) // (clang's C++17 does not capture structured bindings)
     {
-      for(double v : values) finite_value(v, "a value", &name);
-      array("Float64", name, "", internal::bytes_of(values), [&] {
+      const std::vector<double>& values = field.second;
+      for(double v : values) finite_value(v, "a value", &field.first);
+      array("Float64", field.first, "", internal::bytes_of(values), [&] {
         for(double v : values) out << v << '\n';
       });
     }
