@@ -330,6 +330,14 @@ TEST_CASE("Meshes that are not valid domains are refused with what is wrong", "[
     REQUIRE(!problem.empty());
     REQUIRE(tr.number_of_vertices() == 0);
   }
+  SECTION("a tetrahedron too flat for double precision (a fuzzer's mutant of the L-shape, on which TetGen ran without end)")
+  {
+    const Mesh m = ES::IO::read_mesh_with_fields<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/nearly_flat_tetrahedron.ele");
+    Numbered tr;
+    const std::string problem = ES::build_numbered_mesh(tr, m);
+    INFO(problem);
+    REQUIRE(problem.find("is too flat for double precision") != std::string::npos);
+  }
   SECTION("the reserved reference")
   {
     Mesh m = l_shape;

@@ -488,7 +488,7 @@ inline Vtu_mesh read_vtu_text(const std::string& name, std::string_view text)
       const std::size_t data_end = xml.find('<', pos);
       const std::size_t closing_tag = data_end == std::string_view::npos ? data_end : xml.find("</DataArray>", data_end);
       const bool self_closing = !body.empty() && body.back() == '/';
-      if(!self_closing && closing_tag == std::string_view::npos)
+      if(!self_closing && (closing_tag == std::string_view::npos || xml.find("<DataArray", data_end) < closing_tag))
         fail("data array " + quote_token(array_name) + " is not closed by </DataArray>");
       if(format != "ascii")
       {

@@ -14,6 +14,7 @@
 #include <CGAL/enum.h>
 #include <CGAL/intersections.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <algorithm>
 #include <array>
@@ -174,6 +175,31 @@ std::string boundary_overlap(const std::vector<Point>& points, const std::vector
   return found;
 }
 
+/// 6 V / L^3 of tetrahedron `t` of `points` (L its longest edge): 0 flat,
+/// 0.94 at most (regular), in double precision on coordinate differences.
+template <class Point>
+double relative_volume(const std::vector<Point>& points, const std::array<std::size_t, 4>& t)
+{
+  std::array<std::array<double, 3>, 4> p;
+  for(int i = 0; i < 4; ++i)
+    for(int a = 0; a < 3; ++a) p[i][a] = CGAL::to_double(points[t[i]][a]) - CGAL::to_double(points[t[0]][a]);
+  double longest = 0;
+  for(int i = 0; i < 4; ++i)
+    for(int j = i + 1; j < 4; ++j)
+    {
+      double d = 0;
+      for(int a = 0; a < 3; ++a) d += (p[i][a] - p[j][a]) * (p[i][a] - p[j][a]);
+      longest = (std::max)(longest, d);
+    }
+  if(!(longest > 0)) return 0;
+  const double scale = 1 / std::sqrt(longest); // edges scaled to at most 1: no underflow
+  auto e = [&](int i, int a) { return p[i][a] * scale; };
+  const double volume6 = std::abs(e(1, 0) * (e(2, 1) * e(3, 2) - e(2, 2) * e(3, 1)) -
+                                  e(1, 1) * (e(2, 0) * e(3, 2) - e(2, 2) * e(3, 0)) +
+                                  e(1, 2) * (e(2, 0) * e(3, 1) - e(2, 1) * e(3, 0)));
+  return volume6;
+}
+
 /// Fills the outside of the domain that the tetrahedra `cells` of `points`
 /// mesh, up to a box around the points (its corners are the first added
 /// points), keeping the domain's boundary: the returned tetrahedra and
@@ -189,7 +215,18 @@ Exterior_fill fill_exterior(const std::vector<Point>& points, const std::vector<
   if(!fill.problem.empty()) return fill;
   fill.boundary_facets = boundary.size();
   // TetGen's library crashes when it gives up (its error path frees its
-  // memory twice): a boundary that overlaps itself is refused here first.
+  // memory twice), and its recovery of a boundary can run without end near a
+  // tetrahedron too flat for double precision (seen under fuzzing): such
+  // input is refused here first.
+  for(std::size_t k = 0; k < cells.size(); ++k)
+  {
+    const double flatness = relative_volume(points, cells[k]);
+    if(!(flatness >= 1e-12))
+      return fill.problem = "tetrahedron " + std::to_string(k) + " is too flat for double precision (6 V / L^3 = " +
+                            shortest_text(flatness) + ", L its longest edge) to complete the domain around it: "
+                            "repair or remove it in the mesher",
+             fill;
+  }
   fill.problem = boundary_overlap(points, boundary);
   if(!fill.problem.empty()) return fill;
 #ifndef CGAL_EDGE_SWAPPING_3_HAS_TETGEN
