@@ -13,6 +13,7 @@
 #include <CGAL/Edge_swapping_3/make_two_spheres_mesh.h>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -427,6 +428,81 @@ TEST_CASE("edge_swap on domains of any shape: check, stats and optimize keep the
         REQUIRE(after.first >= before.first - 1e-9);
       }
     }
+}
+
+TEST_CASE("The optimizer keeps the extreme dihedral angles of a Gmsh mesh unless told otherwise",
+          "[domain][quality driver][angle range]")
+{
+  // Gmsh 4.8's OpenCASCADE demo `boolean` (Debian's gmsh-doc), meshed as its
+  // docs run it: gmsh -3 boolean.geo -o gmsh_boolean_demo.msh. Under MinMax
+  // alone the topological operations trade its smallest angle (7.62 degrees)
+  // for smaller ones, and the dihedral sine with smoothing its largest.
+  const std::string file = std::string(EDGE_SWAPPING_3_FIXTURES) + "/gmsh_boolean_demo.msh";
+  const Mesh m = ES::IO::read_mesh_with_fields<Point>(file);
+  REQUIRE(m.cells.size() == 1170);
+  const auto before = dihedral_extremes(m);
+  INFO("input: " << before.first << " / " << before.second << " degrees");
+  auto optimized = [&](bool minmax, bool keep) {
+    Numbered tr;
+    REQUIRE(ES::build_numbered_mesh(tr, m) == "");
+    namespace np = ES::parameters;
+    ES::with_mesh_constraints(tr, m, [&](const auto& constraints) {
+      const auto settings = np::keep_dihedral_angle_range(
+          keep, np::operations(minmax ? unsigned(ES::TOPOLOGICAL_OPERATIONS) : unsigned(ES::ALL_OPERATIONS),
+                               np::mesh_constraints(constraints)));
+      return minmax ? ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), settings)
+                    : ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_sine_criterion(), settings);
+    });
+    REQUIRE(tr.is_valid());
+    const Mesh out = ES::numbered_mesh_snapshot(tr, m);
+    REQUIRE(shape_of(out).boundary == shape_of(m).boundary);
+    return dihedral_extremes(out);
+  };
+  // The angles are computed in another vertex order here than by the guard:
+  // the last bits may differ.
+  const double rounding = 1e-9;
+  SECTION("MinMax, topological operations")
+  {
+    const auto kept = optimized(true, true);
+    INFO("kept: " << kept.first << " / " << kept.second);
+    REQUIRE(kept.first >= before.first - rounding);
+    REQUIRE(kept.second < before.second - 1);
+    const auto free = optimized(true, false);
+    INFO("free: " << free.first << " / " << free.second);
+    REQUIRE(free.first < before.first - 1); // what the guard prevents
+  }
+  SECTION("the dihedral sine with smoothing")
+  {
+    const auto kept = optimized(false, true);
+    INFO("kept: " << kept.first << " / " << kept.second);
+    REQUIRE(kept.first >= before.first - rounding);
+    REQUIRE(kept.second <= before.second + rounding);
+    const auto free = optimized(false, false);
+    INFO("free: " << free.first << " / " << free.second);
+    REQUIRE(free.second > before.second + 1); // what the guard prevents
+  }
+  SECTION("the program: --angle-range keep by default, free on request")
+  {
+    Workdir w;
+    const Run kept = w.run("optimize " + file + " --criterion minmax-dihedral --operations topological -o " +
+                           w.path("kept.msh") + " --stats " + w.path("kept.json"));
+    INFO(kept.out << kept.err);
+    REQUIRE(kept.exit_code == 0);
+    const auto k = dihedral_extremes(read_mesh(w, "kept.msh"));
+    REQUIRE(k.first >= before.first - rounding);
+    REQUIRE(k.second < before.second - 1);
+    std::ifstream json(w.path("kept.json"));
+    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    REQUIRE(stats.find("\"angle_range\": \"keep\"") != std::string::npos);
+    const Run free = w.run("optimize " + file + " --criterion minmax-dihedral --operations topological "
+                           "--angle-range free -o " + w.path("free.msh"));
+    REQUIRE(free.exit_code == 0);
+    REQUIRE(dihedral_extremes(read_mesh(w, "free.msh")).first < before.first - 1);
+    require_clean_rejection(w, "optimize " + file + " --criterion minmax-dihedral --angle-range wide -o " +
+                                   w.path("o.msh"), "--angle-range", {"kept.msh", "kept.json", "free.msh"});
+    require_clean_rejection(w, "optimize " + file + " --criterion delaunay --angle-range keep -o " + w.path("o.msh"),
+                            "--angle-range sets the worst-first driver", {"kept.msh", "kept.json", "free.msh"});
+  }
 }
 
 TEST_CASE("Gmsh files: 4.1 and 2.2, ASCII and binary, read as Gmsh wrote them and written back", "[files][gmsh]")

@@ -67,6 +67,10 @@ int main(int argc, char** argv)
   auto* target = optimize->add_option("--quality-target", opt.quality_target,
                                       "worst-first driver: work only on the cells worse than this value of the "
                                       "criterion's measure (degrees for the dihedral angles)");
+  auto* angle_range = optimize->add_option("--angle-range", opt.angle_range,
+                       "worst-first driver: keep (no operation makes a dihedral angle smaller than the input's "
+                       "smallest or larger than its largest) or free (the criterion alone decides)")
+      ->check(CLI::IsMember({"keep", "free"}));
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
   optimize->add_option("--trace", opt.trace, "JSON lines: every visit and the state after every round, for the "
@@ -193,6 +197,7 @@ int main(int argc, char** argv)
     {
       opt.start_given = start->count() > 0;
       opt.quality_target_given = target->count() > 0;
+      opt.angle_range_given = angle_range->count() > 0;
       return run_optimize(opt);
     }
     if(*check) return run_check(check_path);

@@ -26,7 +26,8 @@ struct Optimize_options
   std::string perturb = "cgal", history, stats, schedule = "queue", trace;
   std::string reading; ///< the helper's reading of Algorithm 4 (empty: the package's)
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
-  bool helper = false, start_given = false, paper = false;
+  std::string angle_range = "keep"; ///< the worst-first driver's dihedral angles: keep or free
+  bool helper = false, start_given = false, paper = false, angle_range_given = false;
   double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
   bool quality_target_given = false;
   unsigned int seed = 0;
@@ -128,8 +129,9 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
       else
       {
         typedef std::decay_t<decltype(criterion)> Criterion;
-        const auto settings = np::operations(
-            operations, np::mesh_constraints(constraints, CGAL::parameters::visitor(Worst_first_progress<Criterion>(criterion))));
+        const auto settings = np::keep_dihedral_angle_range(o.angle_range == "keep",
+            np::operations(operations, np::mesh_constraints(constraints,
+                CGAL::parameters::visitor(Worst_first_progress<Criterion>(criterion)))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
@@ -143,6 +145,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
       nlohmann::json j = {{"strategy", o.criterion},
                           {"driver", "worst first"},
                           {"operations", o.operations},
+                          {"angle_range", o.angle_range},
                           {"ending", ES::swap_ending_name(report.ending)},
                           {"edge_removals", report.edge_removals},
                           {"two_step_edge_removals", report.two_step_removals},
@@ -231,6 +234,9 @@ inline int run_optimize(const Optimize_options& o)
                       ") has not; --operations paper-flips has them");
   if(o.quality_target_given && operations == 0)
     throw Usage_error("--quality-target sets the worst-first driver (a quality --criterion, --operations other than "
+                      "paper-flips)");
+  if(o.angle_range_given && operations == 0)
+    throw Usage_error("--angle-range sets the worst-first driver (a quality --criterion, --operations other than "
                       "paper-flips)");
   if(o.quality_target_given && !std::isfinite(o.quality_target))
     throw Usage_error("--quality-target must be a finite number");

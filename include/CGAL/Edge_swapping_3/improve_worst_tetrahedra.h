@@ -16,6 +16,7 @@
 
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Real_timer.h>
+#include <CGAL/Edge_swapping_3/Dihedral_angle_guard.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
@@ -101,6 +102,22 @@ void keep_first_occurrences(std::vector<Handle>& items)
 
 namespace internal {
 
+/// The worst value of the criterion's measure over the finite cells in the domain.
+template <class Tr, class Measure, bool larger_is_worse, class Constraints>
+double worst_in_domain(const Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                       const Constraints& constraints)
+{
+  double w = larger_is_worse ? -HUGE_VAL : HUGE_VAL;
+  for(auto c : tr.finite_cell_handles())
+    if(constraints.is_in_domain(tr, c))
+    {
+      const double v = criterion.measure(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()),
+                                         internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point()));
+      w = larger_is_worse ? (std::max)(w, v) : (std::min)(w, v);
+    }
+  return w;
+}
+
 template <class Tr, class Measure, bool larger_is_worse, class Constraints, class NamedParameters>
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                         const Constraints& constraints, const NamedParameters& np)
@@ -130,12 +147,6 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   // Cells outside the domain (subdomain 0 of a domain mesh) are neither
   // measured nor taken; the operations never join them to the domain.
   auto counted = [&](Cell_handle c) { return !tr.is_infinite(c) && constraints.is_in_domain(tr, c); };
-  auto worst = [&]() {
-    double w = HUGE_VAL;
-    for(Cell_handle c : tr.finite_cell_handles())
-      if(counted(c)) w = (std::min)(w, score(c));
-    return larger_is_worse ? -w : w;
-  };
   // Each cell waits at most once (`queue`, by slot): a cell pushed again
   // while it waits is skipped, not measured. An entry is taken only if its
   // slot still waits in the heap and holds a cell of the same score: a cell
@@ -215,7 +226,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   };
 
   Quality_report report;
-  report.worst_before = worst();
+  report.worst_before = worst_in_domain(tr, criterion, constraints);
   for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
   std::vector<Cell_handle> created;
   // Failed removals in a fixed amount of memory, an 8-byte slot per eight
@@ -380,7 +391,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     }
     else ++report.stuck;
   }
-  report.worst_after = worst();
+  report.worst_after = worst_in_domain(tr, criterion, constraints);
   report.seconds = timer.time();
   return report;
 }
@@ -396,6 +407,13 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
 /// improves the worst tetrahedron where it acts. Every change improves
 /// that worst value beyond the criterion's relative tolerance, so the worst
 /// value over the mesh never gets worse and the run ends.
+///
+/// By default no change makes a dihedral angle smaller than the smallest of
+/// the domain before the run, or larger than the largest
+/// (`Dihedral_angle_guard.h`): a one-sided criterion such as MinMax would
+/// otherwise trade small angles for large ones, and smoothing under it can
+/// flatten cells. The worst value is then that of the guarded measure, the
+/// same as the criterion's on every cell that the guard admits.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`: no
@@ -413,6 +431,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
 ///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the
 ///     queue (as TetGen's optimizer works only on the cells above its target angle); default: every cell, and
 ///     the run ends when no operation improves any cell \cgalParamNEnd
+///   \cgalParamNBegin{keep_dihedral_angle_range} `bool`, default true: refuse every operation that makes a
+///     dihedral angle outside the range of the domain's before the run \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
 ///     every flip, removal (each step of a two-step removal) and move \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -420,8 +440,21 @@ template <class Tr, class Measure, bool larger_is_worse, class NamedParameters =
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                         const NamedParameters& np = CGAL::parameters::default_values())
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const bool keep_range = choose_parameter(get_parameter(np, internal_np::keep_dihedral_angle_range), true);
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
-    return internal::improve_worst_tetrahedra(tr, criterion, constraints, np);
+    if(!keep_range) return internal::improve_worst_tetrahedra(tr, criterion, constraints, np);
+    const Dihedral_angle_range range = dihedral_angle_range(
+        tr, [&](typename Tr::Cell_handle c) { return constraints.is_in_domain(tr, c); });
+    // Reported in the criterion's own measure (the guard computes the
+    // angles on the points in another order: the last bits may differ).
+    const double before = internal::worst_in_domain(tr, criterion, constraints);
+    Quality_report report =
+        internal::improve_worst_tetrahedra(tr, guarded_by_dihedral_angles(criterion, range), constraints, np);
+    report.worst_before = before;
+    report.worst_after = internal::worst_in_domain(tr, criterion, constraints);
+    return report;
   });
 }
 

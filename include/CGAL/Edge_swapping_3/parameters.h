@@ -26,6 +26,7 @@ enum maximum_ring_size_t { maximum_ring_size };
 enum operations_t { operations };
 enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
 enum quality_target_t { quality_target };
+enum keep_dihedral_angle_range_t { keep_dihedral_angle_range };
 enum hint_t { hint };
 enum maximum_swaps_t { maximum_swaps };
 enum insertion_order_t { insertion_order };
@@ -93,6 +94,10 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_moves_per_vertex)
 /// `double`: `improve_worst_tetrahedra` works only on the cells whose measure
 /// is worse than this value (default: on every cell).
 CGAL_EDGE_SWAPPING_3_PARAMETER(quality_target)
+/// `bool`: whether `improve_worst_tetrahedra` refuses every operation that
+/// makes a dihedral angle smaller than the smallest before the run or larger
+/// than the largest (default true).
+CGAL_EDGE_SWAPPING_3_PARAMETER(keep_dihedral_angle_range)
 
 /// `Tr::Cell_handle`: where the walk of `insert_by_swapping` starts (default: anywhere).
 CGAL_EDGE_SWAPPING_3_PARAMETER(hint)

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The guard that keeps a run's extreme dihedral angles: a measure adaptor
+// that scores as the worst possible value every tetrahedron whose smallest
+// dihedral angle is below a bound or whose largest is above one. Under a
+// criterion of the guarded measure, every operation refuses to make such a
+// tetrahedron, so a one-sided criterion (MinMax sees only the largest angle,
+// MaxMin only the smallest) cannot trade one end for the other.
+
+#ifndef CGAL_EDGE_SWAPPING_3_DIHEDRAL_ANGLE_GUARD_H
+#define CGAL_EDGE_SWAPPING_3_DIHEDRAL_ANGLE_GUARD_H
+
+#include <CGAL/Edge_swapping_3/Quality_criteria.h>
+#include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
+#include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Edge_swapping_3 {
+
+namespace internal {
+
+// The smallest and largest cosine of the dihedral angles of `abcd`,
+// computed on the four points in lexicographic order: the same four points
+// give the same values whatever their order in a cell, so a tetrahedron that
+// passed the guard when it was made passes it whenever it is measured again.
+template <class P>
+std::pair<double, double> dihedral_cosine_extremes(const P& a, const P& b, const P& c, const P& d)
+{
+  std::array<const P*, 4> p = {&a, &b, &c, &d};
+  auto less = [](const P* u, const P* v) {
+    const double ux = CGAL::to_double(u->x()), vx = CGAL::to_double(v->x());
+    if(ux != vx) return ux < vx;
+    const double uy = CGAL::to_double(u->y()), vy = CGAL::to_double(v->y());
+    if(uy != vy) return uy < vy;
+    return CGAL::to_double(u->z()) < CGAL::to_double(v->z());
+  };
+  std::sort(p.begin(), p.end(), less);
+  const auto cosines = dihedral_cosines(*p[0], *p[1], *p[2], *p[3]);
+  const auto [lo, hi] = std::minmax_element(cosines.begin(), cosines.end());
+  return {*lo, *hi};
+}
+
+} // namespace internal
+
+/// The range of dihedral angles allowed, as cosines (no `acos` per cell): a
+/// tetrahedron is inside when the cosine of its smallest angle is at most
+/// `smallest_angle_cosine` and that of its largest at least
+/// `largest_angle_cosine`. The default allows every tetrahedron.
+struct Dihedral_angle_range
+{
+  double smallest_angle_cosine = 1;  ///< cosine of the smallest angle allowed
+  double largest_angle_cosine = -1;  ///< cosine of the largest angle allowed
+
+  /// The range from `smallest` to `largest` degrees.
+  static Dihedral_angle_range from_degrees(double smallest, double largest)
+  {
+    const double to_radians = 3.14159265358979323846 / 180.0;
+    return {std::cos(smallest * to_radians), std::cos(largest * to_radians)};
+  }
+
+  /// Widens the range to hold the tetrahedron `abcd`.
+  template <class P>
+  void extend(const P& a, const P& b, const P& c, const P& d)
+  {
+    const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
+    smallest_angle_cosine = (std::max)(smallest_angle_cosine, hi);
+    largest_angle_cosine = (std::min)(largest_angle_cosine, lo);
+  }
+
+  /// Whether every dihedral angle of `abcd` is inside the range.
+  template <class P>
+  bool contains(const P& a, const P& b, const P& c, const P& d) const
+  {
+    const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
+    return hi <= smallest_angle_cosine && lo >= largest_angle_cosine;
+  }
+
+  /// The smallest angle allowed, in degrees.
+  double smallest_angle() const { return internal::degrees_of_cosine(smallest_angle_cosine); }
+  /// The largest angle allowed, in degrees.
+  double largest_angle() const { return internal::degrees_of_cosine(largest_angle_cosine); }
+};
+
+/// The smallest range that holds the finite cells of `tr` that `counted(c)` accepts.
+/// Empty (every cosine out) when there is none.
+template <class Tr, class Counted>
+Dihedral_angle_range dihedral_angle_range(const Tr& tr, const Counted& counted)
+{
+  Dihedral_angle_range range{-1, 1};
+  for(auto c : tr.finite_cell_handles())
+    if(counted(c))
+      range.extend(internal::bare_point(c->vertex(0)->point()), internal::bare_point(c->vertex(1)->point()),
+                   internal::bare_point(c->vertex(2)->point()), internal::bare_point(c->vertex(3)->point()));
+  return range;
+}
+
+/// Model of `TetrahedronMeasure_3`: `measure`, except that a tetrahedron with
+/// a dihedral angle outside `range` scores the worst value there is
+/// (`+inf` when larger is worse, `-inf` otherwise).
+template <class Measure, bool larger_is_worse>
+struct Dihedral_angle_guarded
+{
+  Measure measure;             ///< the measure the criterion climbs
+  Dihedral_angle_range range;  ///< the angles every tetrahedron keeps
+
+  /// The measure of the tetrahedron `abcd`.
+  template <class P>
+  double operator()(const P& a, const P& b, const P& c, const P& d) const
+  {
+    const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
+    if(!(hi <= range.smallest_angle_cosine && lo >= range.largest_angle_cosine))
+      return larger_is_worse ? HUGE_VAL : -HUGE_VAL;
+    // The extreme angles from the cosines just computed.
+    if constexpr(std::is_same<Measure, Largest_dihedral_angle>::value) return internal::degrees_of_cosine(lo);
+    else if constexpr(std::is_same<Measure, Smallest_dihedral_angle>::value) return internal::degrees_of_cosine(hi);
+    else return measure(a, b, c, d);
+  }
+};
+
+/// `criterion`, guarded: no operation under it makes a tetrahedron with a
+/// dihedral angle outside `range`.
+template <class Measure, bool larger_is_worse>
+Worst_tetrahedron_criterion<Dihedral_angle_guarded<Measure, larger_is_worse>, larger_is_worse>
+guarded_by_dihedral_angles(const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
+                           const Dihedral_angle_range& range)
+{
+  Worst_tetrahedron_criterion<Dihedral_angle_guarded<Measure, larger_is_worse>, larger_is_worse> guarded;
+  guarded.relative_tolerance = criterion.relative_tolerance;
+  guarded.measure.measure = criterion.measure;
+  guarded.measure.range = range;
+  return guarded;
+}
+
+} // namespace Edge_swapping_3
+} // namespace CGAL
+
+#endif // CGAL_EDGE_SWAPPING_3_DIHEDRAL_ANGLE_GUARD_H
