@@ -15,7 +15,9 @@
 //
 // Columns: smallest / largest dihedral angle, cells below 10 and above 165
 // degrees, the 1st percentile of the radius ratio 3r/R, cells, seconds of
-// the optimizer alone (ours: the library call, as for the peers).
+// the optimizer alone (ours: the library call, as for the peers). Then the
+// program `edge_swap` (beside this benchmark) as a user runs it on the file,
+// to each output format, its output checked and compared with the file.
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>
@@ -27,6 +29,8 @@
 #include <filesystem>
 #include <functional>
 #include <set>
+#include <cstdlib>
+#include <sys/wait.h>
 #include <unistd.h>
 
 typedef ES::Numbered_domain_triangulation_3<K> Triangulation;
@@ -127,6 +131,81 @@ quality_peers::Peer_result ours(const Mesh& mesh, const Criterion& criterion, un
   return r;
 }
 
+// The mesh's tetrahedra and their references on the points they use, in
+// the order met: Gmsh's optimizer drops the points no tetrahedron uses
+// (OpenCASCADE keeps the geometry's construction points), and CGAL's
+// triangulation cannot hold them.
+Mesh domain_cells_only(const Mesh& in)
+{
+  Mesh out;
+  out.is_mesh = out.has_references = true;
+  std::vector<std::size_t> number(in.points.size(), std::size_t(-1));
+  for(const auto& t : in.cells)
+  {
+    std::array<std::size_t, 4> u;
+    for(int i = 0; i < 4; ++i)
+    {
+      if(number[t[i]] == std::size_t(-1))
+      {
+        number[t[i]] = out.points.size();
+        out.points.push_back(in.points[t[i]]);
+      }
+      u[i] = number[t[i]];
+    }
+    out.cells.push_back(u);
+  }
+  out.cell_references = in.cell_references;
+  return out;
+}
+
+// The exit code of a shell command.
+int exit_code(const std::string& command)
+{
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The program on the mesh file as it is, as a user runs it: `optimize
+// --criterion minmax-dihedral --operations topological` to each format, then
+// `check` on the output; the output read back must hold the file's points,
+// the same boundary and interface triangles, and angles no worse.
+void program_rows(const std::string& edge_swap, const std::string& path, const Mesh& file,
+                  const std::filesystem::path& dir)
+{
+  auto cell_mesh = [](const Mesh& m) {
+    quality_peers::Cell_mesh c{m.points, m.cells, m.cell_references};
+    if(c.subdomains.empty()) c.subdomains.assign(c.cells.size(), 1);
+    for(int& r : c.subdomains)
+      if(r == 0) r = -1;
+    return c;
+  };
+  const auto input = cell_mesh(file);
+  const Quality_row before = quality(input);
+  for(const std::string format : {"mesh", "msh", "vtu", "ele"})
+  {
+    const std::string out = (dir / ("program_out." + format)).string();
+    const int optimized = exit_code("'" + edge_swap + "' optimize '" + path + "' --criterion minmax-dihedral "
+                                    "--operations topological -q -o '" + out + "' > /dev/null 2>&1");
+    const int checked = optimized == 0 ? exit_code("'" + edge_swap + "' check '" + out + "' > /dev/null 2>&1") : -1;
+    std::string verdict;
+    if(optimized != 0 || checked != 0)
+      verdict = "optimize exit " + std::to_string(optimized) + ", check exit " + std::to_string(checked);
+    else
+    {
+      const auto output = cell_mesh(ES::IO::read_mesh_with_fields<K::Point_3>(out));
+      const Quality_row after = quality(output);
+      char angles[96];
+      std::snprintf(angles, sizeof angles, "%.2f / %.2f", after.smallest, after.largest);
+      verdict = std::string("check ok, ") + (output.points == input.points ? "same points" : "POINTS CHANGED") + ", " +
+                (kept_triangles(output) == kept_triangles(input) ? "same boundary and interfaces" : "BOUNDARY CHANGED") +
+                ", " + angles +
+                (after.smallest >= before.smallest - 1e-9 && after.largest <= before.largest + 1e-9 ? "" : " WORSE");
+    }
+    std::printf("  edge_swap optimize -o X.%-4s        %s\n", format.c_str(), verdict.c_str());
+  }
+  std::fflush(stdout);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -140,6 +219,8 @@ int main(int argc, char** argv)
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("edge_swapping_3_real_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
+  // The program beside this benchmark in the build's bin folder.
+  const std::string edge_swap = (std::filesystem::absolute(argv[0]).parent_path() / "edge_swap").string();
   std::printf("%-36s %15s %6s %6s %7s %8s %8s\n", "", "min / max", "<10", ">165", "rr 1%", "cells", "seconds");
   for(int a = 1; a < argc; ++a)
   {
@@ -155,13 +236,15 @@ int main(int argc, char** argv)
       continue;
     }
     if(mesh.cell_references.empty()) mesh.cell_references.assign(mesh.cells.size(), 1);
+    const Mesh file = mesh;
+    mesh = domain_cells_only(mesh);
     // Gmsh names volumes from 1; a reference 0 would be the outside for the peers.
     for(int& r : mesh.cell_references)
       if(r == 0) r = -1;
     mesh.has_references = true;
     const quality_peers::Cell_mesh input{mesh.points, mesh.cells, mesh.cell_references};
-    std::printf("%s: %zu points, %zu tetrahedra\n", std::filesystem::path(path).filename().c_str(),
-                mesh.points.size(), mesh.cells.size());
+    std::printf("%s: %zu points (used by a tetrahedron), %zu tetrahedra\n",
+                std::filesystem::path(path).filename().c_str(), mesh.points.size(), mesh.cells.size());
     quality_peers::Peer_result as_read;
     as_read.mesh = input;
     row("input", input, as_read);
@@ -175,6 +258,7 @@ int main(int argc, char** argv)
     row("CGAL remeshing flips (5)", input, quality_peers::cgal_remeshing(input, false, 5));
     row("CGAL remeshing flips + smooth (5)", input, quality_peers::cgal_remeshing(input, true, 5));
     row("Gmsh 4.8 optimizer", input, quality_peers::gmsh_optimizer(input, "/usr/bin/python3", GMSH_SCRIPT, dir.string()));
+    program_rows(edge_swap, path, file, dir);
   }
   std::filesystem::remove_all(dir);
   return 0;

@@ -366,17 +366,11 @@ void write_mesh(const Workdir& w, const std::string& name, const Mesh& m,
 Mesh read_mesh(const Workdir& w, const std::string& name) { return ES::IO::read_mesh_with_fields<Point>(w.path(name)); }
 
 // The shape of a mesh read back from a format that keeps fewer things:
-// TetGen files no references, VTK files no triangles.
+// TetGen and VTK files no boundary triangles (TetGen's .ele keeps the
+// regions as the tetrahedra's attribute).
 Domain_shape comparable(Domain_shape s, const std::string& format)
 {
   if(format == "ele" || format == "vtu") s.triangles.clear();
-  if(format == "ele")
-  {
-    s.interfaces.clear();
-    CGAL::Exact_rational total = 0;
-    for(const auto& [r, v] : s.volumes) total += v;
-    s.volumes = {{1, total}};
-  }
   return s;
 }
 
@@ -397,7 +391,7 @@ TEST_CASE("edge_swap on domains of any shape: check, stats and optimize keep the
                                             return Point(i == 0 ? ((j + k) % 2 ? -1.1998078261295e-31 : 3e-32) : i, j, k);
                                           })}};
   for(const auto& [name, m] : meshes)
-    for(const std::string in_format : {"mesh", "msh"})
+    for(const std::string in_format : {"mesh", "msh", "vtu", "ele"})
     {
       const std::string input = name + "." + in_format;
       write_mesh(w, input, m);
@@ -422,12 +416,49 @@ TEST_CASE("edge_swap on domains of any shape: check, stats and optimize keep the
         REQUIRE(r.exit_code == 0);
         const Mesh out = read_mesh(w, output);
         REQUIRE(out.points == m.points);
-        REQUIRE(comparable(shape_of(out), out_format) == comparable(shape_of(m), out_format));
+        REQUIRE(comparable(comparable(shape_of(out), out_format), in_format) ==
+                comparable(comparable(shape_of(m), out_format), in_format));
         const auto after = dihedral_extremes(out);
         REQUIRE(after.second <= before.second);
         REQUIRE(after.first >= before.first - 1e-9);
       }
     }
+}
+
+TEST_CASE("TetGen regions: the first attribute of an .ele file is the tetrahedron's region, read and written",
+          "[files][tetgen]")
+{
+  Workdir w;
+  // Two cubes of six tetrahedra each, regions 3 and -10, as `tetgen -A` writes them.
+  const Mesh m = cube_grid_mesh(2, 1, 1, [](int i, int, int) { return i == 0 ? 3 : -10; });
+  write_mesh(w, "two.ele", m);
+  std::ifstream ele(w.path("two.ele"));
+  std::string header;
+  std::getline(ele, header);
+  REQUIRE(header == "12 4 1");
+  const Mesh back = read_mesh(w, "two.ele");
+  REQUIRE(back.has_references);
+  REQUIRE(back.cell_references == m.cell_references);
+  REQUIRE(shape_of(back).interfaces == shape_of(m).interfaces);
+  // The program keeps both regions and their interface through an .ele.
+  const Run r = w.run("optimize " + w.path("two.ele") + " --criterion minmax-dihedral --operations topological -o " +
+                      w.path("out.ele"));
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const Mesh out = read_mesh(w, "out.ele");
+  REQUIRE(shape_of(out).interfaces == shape_of(m).interfaces);
+  REQUIRE(shape_of(out).volumes == shape_of(m).volumes);
+  // A region that is not a whole number is refused with its line.
+  {
+    std::ofstream bad(w.path("bad.ele"));
+    bad << "1 4 1\n1 1 2 3 4 1.5\n";
+    std::ofstream node(w.path("bad.node"));
+    node << "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  }
+  require_clean_rejection(w, "check " + w.path("bad.ele"), "bad.ele:2:", {"two.ele", "two.node", "out.ele", "out.node",
+                                                                      "bad.ele", "bad.node"});
+  const Run bad = w.run("check " + w.path("bad.ele"));
+  REQUIRE(bad.err.find("the region attribute 1.5 is not a whole number") != std::string::npos);
 }
 
 TEST_CASE("The optimizer keeps the extreme dihedral angles of a Gmsh mesh unless told otherwise",

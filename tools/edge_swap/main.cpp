@@ -93,7 +93,7 @@ int main(int argc, char** argv)
   refine->add_option("-o,--output", ref.output, "output .ele, .mesh, .msh or .vtu")->required();
   refine->add_option("--by", ref.by, "aspect-ratio or gradient")->required();
   refine->add_option("--target", ref.target, "aspect-ratio: the largest aspect ratio wanted");
-  refine->add_option("--ratio", ref.ratio, "aspect-ratio: edge (longest/shortest edge, default) or radius (circumradius/inradius)");
+  refine->add_option("--ratio", ref.ratio, "aspect-ratio: edge (longest/shortest edge, default) or circumradius-inradius (R/r)");
   refine->add_option("--max-sites", ref.max_sites, "aspect-ratio: site budget");
   refine->add_option("--field", ref.field, "gradient: a vertex field of the input, or flow-density / flow-speed");
   refine->add_option("--sites", ref.sites, "gradient: sites per round, e.g. 2000,2000");

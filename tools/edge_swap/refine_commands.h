@@ -119,7 +119,9 @@ inline int run_refine(const Refine_options& o)
   outputs.push_back(o.history);
   check_output_paths(outputs);
   if(o.by != "aspect-ratio" && o.by != "gradient") throw Usage_error("--by is aspect-ratio or gradient");
-  if(o.ratio != "edge" && o.ratio != "radius") throw Usage_error("--ratio is edge or radius");
+  if(o.ratio != "edge" && o.ratio != "circumradius-inradius")
+    throw Usage_error("--ratio is edge (longest over shortest edge) or circumradius-inradius (R/r, 3 for a regular "
+                      "tetrahedron; the radius ratio 3r/R is 3 over it)");
   if(o.by == "aspect-ratio" && !(o.target >= 1)) throw Usage_error("--by aspect-ratio needs --target R with R >= 1");
   if(o.by == "gradient" && (o.field.empty() || o.sites.empty()))
     throw Usage_error("--by gradient needs --field NAME and --sites N[,N...]");

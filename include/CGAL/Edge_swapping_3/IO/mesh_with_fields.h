@@ -91,8 +91,9 @@ Mesh_with_fields<Point> mesh_with_fields_from_text(const std::string& path, std:
     }
     if(ele)
     {
-      in.cells = read_ele_text(path, text, coordinates.size(), node.first_index);
+      in.cells = read_ele_text(path, text, coordinates.size(), node.first_index, &in.cell_references);
       in.is_mesh = true;
+      in.has_references = !in.cell_references.empty();
     }
   }
   else if(has_extension(path, ".mesh") || has_extension(path, ".msh"))
@@ -222,7 +223,10 @@ void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mes
                write_node_file(out, coordinates(), attributes, m->first_index);
              }));
     add_file(path, std::function<void(std::ostream&)>(
-                       [m](std::ostream& out) { write_ele_file(out, m->cells, m->first_index); }));
+                       [m](std::ostream& out) {
+                         write_ele_file(out, m->cells, m->first_index,
+                                        m->has_references ? &m->cell_references : nullptr);
+                       }));
   }
   else if(has_extension(path, ".mesh"))
     add_file(path, std::function<void(std::ostream&)>([m, coordinates](std::ostream& out) {
@@ -258,6 +262,12 @@ void write_mesh_with_fields(const std::string& path, Mesh_with_fields<Point> mes
                for(std::size_t f = 0; f < m->fields.size(); ++f) point_fields.emplace_back(m->field_names[f], m->fields[f]);
                for(std::size_t f = 0; f < m->cell_fields.size(); ++f)
                  cell_fields.emplace_back(m->cell_field_names[f], m->cell_fields[f]);
+               // The references as the cell field the reader takes them from, unless given.
+               const bool given = std::find(m->cell_field_names.begin(), m->cell_field_names.end(), "subdomain") !=
+                                  m->cell_field_names.end();
+               if(m->has_references && !given && m->cell_references.size() == m->cells.size())
+                 cell_fields.emplace_back("subdomain",
+                                          std::vector<double>(m->cell_references.begin(), m->cell_references.end()));
                write_vtu_file(out, coordinates(), m->cells, point_fields, cell_fields, options.vtu);
              }));
 }

@@ -4,7 +4,8 @@
 //
 // .node: "<#points> <dim=3> <#attributes> <#markers 0|1>", then
 //        "<index> <x> <y> <z> [attributes] [marker]".
-// .ele:  "<#tets> <nodes per tet=4> <#attributes>", then "<index> <n1> <n2> <n3> <n4> [attributes]".
+// .ele:  "<#tets> <nodes per tet=4> <#attributes>", then "<index> <n1> <n2> <n3> <n4> [attributes]";
+//        the first attribute is the region (`tetgen -A`), a whole number.
 // '#' starts a comment; indices start at 0 or 1 (the first point decides), as in TetGen.
 
 #ifndef CGAL_EDGE_SWAPPING_3_IO_TETGEN_H
@@ -13,7 +14,9 @@
 #include <CGAL/Edge_swapping_3/IO/text_input.h>
 #include <CGAL/Edge_swapping_3/IO/text_output.h>
 #include <array>
+#include <cmath>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -135,8 +138,11 @@ inline Node_file read_node_file(const std::string& path) { return read_node_text
 
 /// Reads the text of an .ele file: tetrahedra as 0-based point indices.
 /// `number_of_points` and `first_index` come from the matching .node file.
+/// With `regions`, the first attribute of each tetrahedron (its region, as
+/// `tetgen -A` writes it) is put there when the file has attributes.
 inline std::vector<std::array<std::size_t, 4>>
-read_ele_text(const std::string& name, std::string_view text, std::size_t number_of_points, int first_index)
+read_ele_text(const std::string& name, std::string_view text, std::size_t number_of_points, int first_index,
+              std::vector<int>* regions = nullptr)
 {
   internal::Line_reader r(name, text);
   if(!r.next_line()) r.fail("empty file: no header line");
@@ -163,7 +169,19 @@ read_ele_text(const std::string& name, std::string_view text, std::size_t number
         r.fail("node index " + std::to_string(i) + " is not a point of the .node file");
       v = std::size_t(i - first_index);
     }
-    for(int a = 0; a < n_attr; ++a) r.read<double>("an attribute");
+    for(int a = 0; a < n_attr; ++a)
+    {
+      const double value = r.read<double>("an attribute");
+      if(a > 0 || regions == nullptr) continue;
+      if(!(value == std::floor(value) && std::abs(value) <= 2147483647.0))
+      {
+        std::ostringstream text;
+        text.precision(17);
+        text << value;
+        r.fail("the region attribute " + text.str() + " is not a whole number: regions are read as integer references");
+      }
+      regions->push_back(int(value));
+    }
     r.expect_end();
     cells.push_back(t);
   }
@@ -197,14 +215,21 @@ inline void write_node_file(std::ostream& stream, const std::vector<std::array<d
 }
 
 /// Writes an .ele file; each tetrahedron positively oriented (TetGen's convention too).
+/// With `regions` (one per tetrahedron), each is written as the tetrahedron's
+/// attribute, as `tetgen -A` writes regions.
 inline void write_ele_file(std::ostream& stream, const std::vector<std::array<std::size_t, 4>>& cells,
-                           int first_index)
+                           int first_index, const std::vector<int>* regions = nullptr)
 {
   Text_sink out(stream);
-  out << cells.size() << " 4 0\n";
+  const bool with_regions = regions != nullptr && regions->size() == cells.size();
+  out << cells.size() << (with_regions ? " 4 1\n" : " 4 0\n");
   for(std::size_t k = 0; k < cells.size(); ++k)
+  {
     out << k + first_index << ' ' << cells[k][0] + first_index << ' ' << cells[k][1] + first_index << ' '
-        << cells[k][2] + first_index << ' ' << cells[k][3] + first_index << '\n';
+        << cells[k][2] + first_index << ' ' << cells[k][3] + first_index;
+    if(with_regions) out << ' ' << (*regions)[k];
+    out << '\n';
+  }
 }
 
 } // namespace IO
