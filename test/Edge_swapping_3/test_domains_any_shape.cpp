@@ -425,6 +425,34 @@ TEST_CASE("edge_swap on domains of any shape: check, stats and optimize keep the
     }
 }
 
+TEST_CASE("edge_swap refine on a completed domain counts the domain's vertices only", "[domain][any shape][program]")
+{
+  Workdir w;
+  // An L-shape whose inner grid points are moved a little (on the regular
+  // grid every circumcenter is on an edge: nothing to refine).
+  const Mesh m = cube_grid_mesh(5, 5, 3, [](int i, int j, int) { return i >= 3 && j >= 3 ? 0 : 1; },
+                                [](int i, int j, int k) {
+                                  const bool inner = i > 0 && i < 5 && j > 0 && j < 5 && k > 0 && k < 3;
+                                  const double d = inner ? 0.05 * ((i * 7 + j * 3 + k * 5) % 5 - 2) : 0;
+                                  return Point(i + d, j - d, k + 0.5 * d);
+                                });
+  write_mesh(w, "l.mesh", m);
+  const Run r = w.run("refine " + w.path("l.mesh") + " --by aspect-ratio --target 1.5 --max-sites 20 --history " +
+                      w.path("h.csv") + " -o " + w.path("out.mesh"));
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const Mesh out = read_mesh(w, "out.mesh");
+  REQUIRE(out.points.size() > m.points.size());
+  REQUIRE(r.out.find("vertices " + std::to_string(out.points.size()) + ",") != std::string::npos);
+  std::ifstream history(w.path("h.csv"));
+  std::string line, last;
+  while(std::getline(history, line))
+    if(!line.empty()) last = line;
+  // round,sites_inserted,vertices,...
+  const std::size_t first = last.find(','), second = last.find(',', first + 1);
+  REQUIRE(last.substr(second + 1, last.find(',', second + 1) - second - 1) == std::to_string(out.points.size()));
+}
+
 TEST_CASE("TetGen regions: the first attribute of an .ele file is the tetrahedron's region, read and written",
           "[files][tetgen]")
 {

@@ -156,9 +156,13 @@ inline int run_refine(const Refine_options& o)
   };
   CGAL::Real_timer clock;
   clock.start();
+  // The vertices that complete the domain outside: no site is inserted
+  // outside it, so their count stays, and the counts shown leave them out.
+  const std::size_t completion = tr.number_of_vertices() - ES::number_of_mesh_vertices(tr);
   auto progress = [&](const ES::Refinement_round& r) {
     if(quiet) return;
-    std::cerr << "refine: round " << r.round << ", " << r.sites_inserted << " sites, " << r.vertices << " vertices";
+    std::cerr << "refine: round " << r.round << ", " << r.sites_inserted << " sites, " << r.vertices - completion
+              << " vertices";
     if(o.by == "aspect-ratio") std::cerr << ", worst refinable aspect ratio " << r.worst_refinable;
     std::cerr << " (" << clock.time() << " s)\n";
   };
@@ -194,6 +198,7 @@ inline int run_refine(const Refine_options& o)
     });
   });
 
+  for(auto& r : total.rounds) r.vertices -= completion;
   Output_files files;
   add_mesh_files(files, o.output, tr, in);
   write_rounds(files, o.history, total);
