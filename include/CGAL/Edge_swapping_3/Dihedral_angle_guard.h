@@ -55,13 +55,6 @@ struct Dihedral_angle_range
   double smallest_angle_cosine = 1;  ///< cosine of the smallest angle allowed
   double largest_angle_cosine = -1;  ///< cosine of the largest angle allowed
 
-  /// The range from `smallest` to `largest` degrees.
-  static Dihedral_angle_range from_degrees(double smallest, double largest)
-  {
-    const double to_radians = 3.14159265358979323846 / 180.0;
-    return {std::cos(smallest * to_radians), std::cos(largest * to_radians)};
-  }
-
   /// Widens the range to hold the tetrahedron `abcd`.
   template <class P>
   void extend(const P& a, const P& b, const P& c, const P& d)
@@ -78,11 +71,6 @@ struct Dihedral_angle_range
     const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
     return hi <= smallest_angle_cosine && lo >= largest_angle_cosine;
   }
-
-  /// The smallest angle allowed, in degrees.
-  double smallest_angle() const { return internal::degrees_of_cosine(smallest_angle_cosine); }
-  /// The largest angle allowed, in degrees.
-  double largest_angle() const { return internal::degrees_of_cosine(largest_angle_cosine); }
 };
 
 /// The smallest range that holds the finite cells of `tr` that `counted(c)` accepts.

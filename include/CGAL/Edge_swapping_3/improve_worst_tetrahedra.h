@@ -412,8 +412,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
 /// the domain before the run, or larger than the largest
 /// (`Dihedral_angle_guard.h`): a one-sided criterion such as MinMax would
 /// otherwise trade small angles for large ones, and smoothing under it can
-/// flatten cells. The worst value is then that of the guarded measure, the
-/// same as the criterion's on every cell that the guard admits.
+/// flatten cells.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{operations} bits of `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`: no
