@@ -58,7 +58,7 @@ TEST_CASE("Aspect ratio - both definitions: the largest ratio never grows", "[cr
   {
     check_monotone(ES::Aspect_ratio_criterion(ES::EDGE_LENGTH_RATIO),
                    [](const Tr& tr) { return ES::mesh_statistics(tr).max_edge_length_ratio; }, true, seed);
-    check_monotone(ES::Aspect_ratio_criterion(ES::RADIUS_RATIO),
+    check_monotone(ES::Aspect_ratio_criterion(ES::CIRCUMRADIUS_OVER_INRADIUS),
                    [](const Tr& tr) { return ES::mesh_statistics(tr).max_circumradius_over_inradius; }, true, seed);
   }
 }

@@ -66,7 +66,7 @@ auto with_criterion(const std::string& name, Run run)
   if(name == "minmax-dihedral") return run(ES::Min_max_dihedral_angle_criterion());
   if(name == "maxmin-dihedral") return run(ES::Max_min_dihedral_angle_criterion());
   if(name == "min-edges") return run(ES::Min_edges_criterion());
-  if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion(ES::RADIUS_RATIO));
+  if(name == "aspect-ratio") return run(ES::Aspect_ratio_criterion(ES::CIRCUMRADIUS_OVER_INRADIUS));
   if(name == "edge-ratio") return run(ES::Aspect_ratio_criterion(ES::EDGE_LENGTH_RATIO));
   if(name == "radius-ratio") return run(ES::Max_min_radius_ratio_criterion());
   if(name == "dihedral-sine") return run(ES::Max_min_dihedral_sine_criterion());

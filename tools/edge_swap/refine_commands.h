@@ -177,7 +177,7 @@ inline int run_refine(const Refine_options& o)
       if(o.by == "aspect-ratio")
         total = ES::refine_by_aspect_ratio(
             tr, o.target, criterion,
-            np::aspect_ratio_definition(o.ratio == "edge" ? ES::EDGE_LENGTH_RATIO : ES::RADIUS_RATIO,
+            np::aspect_ratio_definition(o.ratio == "edge" ? ES::EDGE_LENGTH_RATIO : ES::CIRCUMRADIUS_OVER_INRADIUS,
                                         np::maximum_sites(o.max_sites, settings)));
       else
       {

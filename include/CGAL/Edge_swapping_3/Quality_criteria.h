@@ -108,17 +108,17 @@ struct Smallest_dihedral_angle
 /// Which of the paper's aspect ratios.
 enum Aspect_ratio_definition
 {
-  EDGE_LENGTH_RATIO, ///< longest over shortest edge
-  RADIUS_RATIO       ///< circumradius over inradius
+  EDGE_LENGTH_RATIO,          ///< longest over shortest edge
+  CIRCUMRADIUS_OVER_INRADIUS  ///< circumradius over inradius R/r (the radius ratio 3r/R is 3 over it)
 };
 
-/// The aspect ratio, by default the radius ratio: the edge length ratio is
-/// blind to slivers (four well-spaced points nearly coplanar), so minimizing
-/// it can make the worst dihedral angles worse (issue 11: on the two-spheres
+/// The aspect ratio, by default circumradius over inradius: the edge length
+/// ratio is blind to slivers (four well-spaced points nearly coplanar), so
+/// minimizing it can make the worst dihedral angles worse (on the two-spheres
 /// mesh the worst went from 178.97 to 180.0 degrees).
 struct Aspect_ratio
 {
-  Aspect_ratio_definition definition = RADIUS_RATIO; ///< which of the paper's two ratios
+  Aspect_ratio_definition definition = CIRCUMRADIUS_OVER_INRADIUS; ///< which of the paper's two ratios
   /// The measure of the tetrahedron `abcd`.
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
