@@ -309,6 +309,20 @@ TEST_CASE("Meshes that are not valid domains are refused with what is wrong", "[
     REQUIRE(!problem.empty());
     REQUIRE(tr.number_of_vertices() == 0);
   }
+  SECTION("messages name the points as the file does, points on no tetrahedron counted")
+  {
+    // Two tetrahedra on the same side of their common facet 1 2 3, after a
+    // point that no tetrahedron uses (left out of the triangulation).
+    Mesh m;
+    m.is_mesh = m.has_references = true;
+    m.points = {Point(9, 9, 9), Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), Point(0.2, 0.2, 0.5)};
+    m.cells = {{1, 2, 3, 4}, {1, 2, 3, 5}};
+    m.cell_references = {1, 1};
+    Numbered tr;
+    const std::string problem = ES::build_numbered_mesh(tr, m);
+    INFO(problem);
+    REQUIRE(problem.find("facet 1 2 3") != std::string::npos);
+  }
   SECTION("two overlapping parts")
   {
     // The L-shape and a copy of one of its cubes shifted by half a cube: the boundaries cross.

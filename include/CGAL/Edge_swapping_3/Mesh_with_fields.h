@@ -169,14 +169,16 @@ std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
   else
     for(std::size_t v = 0; v < number.size(); ++v) number[v] = v;
 
+  // Messages name the points as the file numbers them.
+  const internal::Point_names names{own.empty() ? nullptr : &own};
   bool boundary_shape = false;
-  std::string problem =
-      internal::build_triangulation_from_cells(tr, *points, *tetrahedra, vertices, cells, 100000, &boundary_shape);
+  std::string problem = internal::build_triangulation_from_cells(tr, *points, *tetrahedra, vertices, cells, 100000,
+                                                                 &boundary_shape, names);
   if(!problem.empty())
   {
     if(!boundary_shape) return problem;
     // Not the triangulation of its convex hull: fill the outside.
-    internal::Exterior_fill fill = internal::fill_exterior(*points, *tetrahedra);
+    internal::Exterior_fill fill = internal::fill_exterior(*points, *tetrahedra, names);
     if(!fill.problem.empty()) return fill.problem;
     std::vector<Tr_point> all_points(points->begin(), points->end());
     for(const auto& p : fill.added_points) all_points.emplace_back(p[0], p[1], p[2]);
@@ -192,7 +194,7 @@ std::string build_numbered_mesh(Tr& tr, const Mesh_with_fields<Point>& mesh)
       if(sign(t) != domain_sign) std::swap(t[0], t[1]);
       all.push_back(t);
     }
-    problem = internal::build_triangulation_from_cells(tr, all_points, all, vertices, cells, 100000);
+    problem = internal::build_triangulation_from_cells(tr, all_points, all, vertices, cells, 100000, nullptr, names);
     if(!problem.empty())
       return "the domain's boundary could not be kept while filling its outside (" + problem +
              "): the tetrahedra overlap, or the mesh is not conforming";

@@ -46,12 +46,27 @@ inline std::string shortest_text(double x)
   return std::string(text, end);
 }
 
+namespace internal {
+/// How a message names point `k`: as `(*numbers)[k]` when given (the
+/// numbering of the file, whose points that no tetrahedron uses were left
+/// out before `k` was counted), otherwise as `k`.
+struct Point_names
+{
+  const std::vector<std::size_t>* numbers = nullptr;
+  std::string operator()(std::size_t k) const
+  {
+    return std::to_string(numbers != nullptr && k < numbers->size() ? (*numbers)[k] : k);
+  }
+};
+} // namespace internal
+
 /// An empty string if `points` (finite coordinates, within the supported extent) span 3-D
 /// space with no point repeated; otherwise what is wrong, with 0-based point numbers. Named parameter:
 /// `geom_traits` (CGAL's; default: the kernel of the points).
 template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::string point_set_problem(const std::vector<Point>& points,
-                              const NamedParameters& np = CGAL::parameters::default_values())
+                              const NamedParameters& np = CGAL::parameters::default_values(),
+                              const internal::Point_names& name = internal::Point_names())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -64,7 +79,7 @@ std::string point_set_problem(const std::vector<Point>& points,
     {
       const double x = CGAL::to_double(points[k][c]);
       const std::string problem = coordinate_problem(x);
-      if(!problem.empty()) return "point " + std::to_string(k) + ": " + problem;
+      if(!problem.empty()) return "point " + name(k) + ": " + problem;
       low[c] = (std::min)(low[c], x);
       high[c] = (std::max)(high[c], x);
     }
@@ -92,7 +107,7 @@ std::string point_set_problem(const std::vector<Point>& points,
     if(compare(points[order[k - 1]], points[order[k]]) == EQUAL)
     {
       const std::size_t a = (std::min)(order[k - 1], order[k]), b = (std::max)(order[k - 1], order[k]);
-      return "duplicate points: point " + std::to_string(a) + " and point " + std::to_string(b);
+      return "duplicate points: point " + name(a) + " and point " + name(b);
     }
 
   // Find a non-degenerate tetrahedron: the first point, a second one, a

@@ -76,7 +76,8 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
                                            const std::vector<std::array<std::size_t, 4>>& cells,
                                            std::vector<typename Tr::Vertex_handle>& vertices,
                                            std::vector<typename Tr::Cell_handle>& cell_handles,
-                                           std::size_t hilbert_order_above, bool* boundary_shape = nullptr)
+                                           std::size_t hilbert_order_above, bool* boundary_shape = nullptr,
+                                           const Point_names& point_name = Point_names())
 {
   if(boundary_shape) *boundary_shape = false;
   typedef typename Tr::Cell_handle Cell_handle;
@@ -85,7 +86,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   auto orientation = tr.geom_traits().orientation_3_object();
   auto cell_name = [](std::size_t k) { return "tetrahedron " + std::to_string(k); };
 
-  std::string problem = point_set_problem(points, CGAL::parameters::geom_traits(tr.geom_traits()));
+  std::string problem = point_set_problem(points, CGAL::parameters::geom_traits(tr.geom_traits()), point_name);
   if(!problem.empty()) return problem;
   if(cells.empty()) return "no tetrahedra";
   // The table of open facets packs indices and places in 32 bits.
@@ -96,11 +97,11 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
     for(int i = 0; i < 4; ++i)
     {
       if(cells[k][i] >= points.size())
-        return cell_name(k) + " names point " + std::to_string(cells[k][i]) + ", but there are only " +
+        return cell_name(k) + " names point " + point_name(cells[k][i]) + ", but there are only " +
                std::to_string(points.size()) + " points";
       for(int j = 0; j < i; ++j)
         if(cells[k][i] == cells[k][j])
-          return cell_name(k) + " names point " + std::to_string(cells[k][i]) + " twice";
+          return cell_name(k) + " names point " + point_name(cells[k][i]) + " twice";
     }
 
   // Orientation: all one way, no flat cell.
@@ -122,7 +123,7 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
   for(const auto& t : cells)
     for(auto v : t) used[v] = 1;
   for(std::size_t v = 0; v < points.size(); ++v)
-    if(!used[v]) return "point " + std::to_string(v) + " is not a vertex of any tetrahedron";
+    if(!used[v]) return "point " + point_name(v) + " is not a vertex of any tetrahedron";
 
   auto& tds = tr.tds();
   // An empty Triangulation_3 (dimension -1) holds one cell for its infinite vertex.
@@ -219,8 +220,8 @@ std::string build_triangulation_from_cells(Tr& tr, const std::vector<typename Tr
       std::array<Vertex_handle, 4> u = {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)};
       u[i] = d->vertex(j);
       if(orientation(u[0]->point(), u[1]->point(), u[2]->point(), u[3]->point()) != NEGATIVE)
-        return fail(cell_name(k) + " overlaps a neighbour across facet " + std::to_string(key[0]) + " " +
-                    std::to_string(key[1]) + " " + std::to_string(key[2]));
+        return fail(cell_name(k) + " overlaps a neighbour across facet " + point_name(key[0]) + " " +
+                    point_name(key[1]) + " " + point_name(key[2]));
       c->set_neighbor(i, d);
       d->set_neighbor(j, c);
     }

@@ -61,7 +61,8 @@ struct Point_triple_hash
 /// facets (`part[k]` for tetrahedron `k`). Returns what is wrong, or an empty string.
 inline std::string boundary_and_parts(const std::vector<std::array<std::size_t, 4>>& cells,
                                       std::vector<std::array<std::uint32_t, 3>>& boundary,
-                                      std::vector<std::uint32_t>& part, std::size_t& parts)
+                                      std::vector<std::uint32_t>& part, std::size_t& parts,
+                                      const Point_names& name = Point_names())
 {
   // Per sorted facet: the first tetrahedron that has it, and how many do.
   struct Seen { std::uint32_t cell; std::uint32_t count; };
@@ -81,8 +82,8 @@ inline std::string boundary_and_parts(const std::vector<std::array<std::size_t, 
       const auto slot = facets.emplace(key, Seen{std::uint32_t(k), 1});
       if(slot.second) continue;
       if(++slot.first->count > 2)
-        return "the facet of points " + std::to_string(key[0]) + " " + std::to_string(key[1]) + " " +
-               std::to_string(key[2]) + " is shared by more than two tetrahedra (tetrahedra overlap)";
+        return "the facet of points " + name(key[0]) + " " + name(key[1]) + " " + name(key[2]) +
+               " is shared by more than two tetrahedra (tetrahedra overlap)";
       parent[root(std::uint32_t(k))] = root(slot.first->cell);
     }
   facets.for_each([&](const std::array<std::uint32_t, 3>& key, const Seen& s) {
@@ -145,7 +146,8 @@ bool triangles_overlap(const std::vector<Point>& points, const std::array<std::u
 /// only at their common points and edges; else the first two that overlap.
 /// Exact; candidate pairs by CGAL's intersection of boxes.
 template <class Point>
-std::string boundary_overlap(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& boundary)
+std::string boundary_overlap(const std::vector<Point>& points, const std::vector<std::array<std::uint32_t, 3>>& boundary,
+                             const Point_names& point_name = Point_names())
 {
   typedef CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t> Box;
   std::vector<Box> boxes;
@@ -161,8 +163,8 @@ std::string boundary_overlap(const std::vector<Point>& points, const std::vector
     CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
       const auto &a = boundary[x.info()], &b = boundary[y.info()];
       if(!triangles_overlap(points, a, b)) return;
-      auto name = [](const std::array<std::uint32_t, 3>& t) {
-        return std::to_string(t[0]) + " " + std::to_string(t[1]) + " " + std::to_string(t[2]);
+      auto name = [&](const std::array<std::uint32_t, 3>& t) {
+        return point_name(t[0]) + " " + point_name(t[1]) + " " + point_name(t[2]);
       };
       found = "the boundary intersects itself: its triangles of points " + name((std::min)(a, b)) + " and " +
               name((std::max)(a, b)) + " overlap (tetrahedra overlap, or the mesh is not conforming)";
@@ -206,12 +208,13 @@ double relative_volume(const std::vector<Point>& points, const std::array<std::s
 /// `cells` together cover the box once, if TetGen succeeded. Their
 /// orientation is TetGen's; the caller orients them and checks the whole exactly.
 template <class Point>
-Exterior_fill fill_exterior(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells)
+Exterior_fill fill_exterior(const std::vector<Point>& points, const std::vector<std::array<std::size_t, 4>>& cells,
+                            const Point_names& point_name = Point_names())
 {
   Exterior_fill fill;
   std::vector<std::array<std::uint32_t, 3>> boundary;
   std::vector<std::uint32_t> part;
-  fill.problem = boundary_and_parts(cells, boundary, part, fill.components);
+  fill.problem = boundary_and_parts(cells, boundary, part, fill.components, point_name);
   if(!fill.problem.empty()) return fill;
   fill.boundary_facets = boundary.size();
   // TetGen's library crashes when it gives up (its error path frees its
@@ -227,7 +230,7 @@ Exterior_fill fill_exterior(const std::vector<Point>& points, const std::vector<
                             "repair or remove it in the mesher",
              fill;
   }
-  fill.problem = boundary_overlap(points, boundary);
+  fill.problem = boundary_overlap(points, boundary, point_name);
   if(!fill.problem.empty()) return fill;
 #ifndef CGAL_EDGE_SWAPPING_3_HAS_TETGEN
   fill.problem = "the mesh is not a triangulation of the convex hull of its points (a non-convex domain, cavities "
