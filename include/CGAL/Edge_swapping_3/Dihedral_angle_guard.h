@@ -64,12 +64,19 @@ struct Dihedral_angle_range
     largest_angle_cosine = (std::min)(largest_angle_cosine, lo);
   }
 
+  /// Whether a tetrahedron whose dihedral angles have the cosines from
+  /// `lo` to `hi` (`internal::dihedral_cosine_extremes`) is inside the range.
+  bool contains_cosines(double lo, double hi) const
+  {
+    return hi <= smallest_angle_cosine && lo >= largest_angle_cosine;
+  }
+
   /// Whether every dihedral angle of `abcd` is inside the range.
   template <class P>
   bool contains(const P& a, const P& b, const P& c, const P& d) const
   {
     const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
-    return hi <= smallest_angle_cosine && lo >= largest_angle_cosine;
+    return contains_cosines(lo, hi);
   }
 };
 
@@ -100,8 +107,7 @@ struct Dihedral_angle_guarded
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
     const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
-    if(!(hi <= range.smallest_angle_cosine && lo >= range.largest_angle_cosine))
-      return larger_is_worse ? HUGE_VAL : -HUGE_VAL;
+    if(!range.contains_cosines(lo, hi)) return larger_is_worse ? HUGE_VAL : -HUGE_VAL;
     // The extreme angles from the cosines just computed.
     if constexpr(std::is_same<Measure, Largest_dihedral_angle>::value) return internal::degrees_of_cosine(lo);
     else if constexpr(std::is_same<Measure, Smallest_dihedral_angle>::value) return internal::degrees_of_cosine(hi);

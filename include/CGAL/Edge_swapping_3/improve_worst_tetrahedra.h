@@ -118,9 +118,13 @@ double worst_in_domain(const Tr& tr, const Worst_tetrahedron_criterion<Measure, 
   return w;
 }
 
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class NamedParameters>
+/// The driver under `criterion`; the report's worst values are in the measure
+/// of `reported` (the criterion that the caller was given, when `criterion`
+/// guards it).
+template <class Tr, class Measure, bool larger_is_worse, class Reported, class Constraints, class NamedParameters>
 Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                        const Constraints& constraints, const NamedParameters& np)
+                                        const Reported& reported, const Constraints& constraints,
+                                        const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -226,7 +230,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   };
 
   Quality_report report;
-  report.worst_before = worst_in_domain(tr, criterion, constraints);
+  report.worst_before = worst_in_domain(tr, reported, constraints);
   for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
   std::vector<Cell_handle> created;
   // Failed removals in a fixed amount of memory, an 8-byte slot per eight
@@ -391,7 +395,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     }
     else ++report.stuck;
   }
-  report.worst_after = worst_in_domain(tr, criterion, constraints);
+  report.worst_after = worst_in_domain(tr, reported, constraints);
   report.seconds = timer.time();
   return report;
 }
@@ -443,17 +447,13 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   using CGAL::parameters::get_parameter;
   const bool keep_range = choose_parameter(get_parameter(np, internal_np::keep_dihedral_angle_range), true);
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
-    if(!keep_range) return internal::improve_worst_tetrahedra(tr, criterion, constraints, np);
+    if(!keep_range) return internal::improve_worst_tetrahedra(tr, criterion, criterion, constraints, np);
     const Dihedral_angle_range range = dihedral_angle_range(
         tr, [&](typename Tr::Cell_handle c) { return constraints.is_in_domain(tr, c); });
     // Reported in the criterion's own measure (the guard computes the
     // angles on the points in another order: the last bits may differ).
-    const double before = internal::worst_in_domain(tr, criterion, constraints);
-    Quality_report report =
-        internal::improve_worst_tetrahedra(tr, guarded_by_dihedral_angles(criterion, range), constraints, np);
-    report.worst_before = before;
-    report.worst_after = internal::worst_in_domain(tr, criterion, constraints);
-    return report;
+    return internal::improve_worst_tetrahedra(tr, guarded_by_dihedral_angles(criterion, range), criterion,
+                                              constraints, np);
   });
 }
 

@@ -15,6 +15,7 @@
 #include <CGAL/intersections.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
+#include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <algorithm>
 #include <array>
@@ -178,28 +179,17 @@ std::string boundary_overlap(const std::vector<Point>& points, const std::vector
 }
 
 /// 6 V / L^3 of tetrahedron `t` of `points` (L its longest edge): 0 flat,
-/// 0.94 at most (regular), in double precision on coordinate differences.
+/// 0.94 at most (regular), in double precision on the edge vectors scaled
+/// as the quality measures scale them (`to_vecs`: no overflow or underflow).
 template <class Point>
 double relative_volume(const std::vector<Point>& points, const std::array<std::size_t, 4>& t)
 {
-  std::array<std::array<double, 3>, 4> p;
-  for(int i = 0; i < 4; ++i)
-    for(int a = 0; a < 3; ++a) p[i][a] = CGAL::to_double(points[t[i]][a]) - CGAL::to_double(points[t[0]][a]);
+  const auto v = to_vecs(points[t[0]], points[t[1]], points[t[2]], points[t[3]]);
   double longest = 0;
   for(int i = 0; i < 4; ++i)
-    for(int j = i + 1; j < 4; ++j)
-    {
-      double d = 0;
-      for(int a = 0; a < 3; ++a) d += (p[i][a] - p[j][a]) * (p[i][a] - p[j][a]);
-      longest = (std::max)(longest, d);
-    }
+    for(int j = i + 1; j < 4; ++j) longest = (std::max)(longest, norm(sub(v[i], v[j])));
   if(!(longest > 0)) return 0;
-  const double scale = 1 / std::sqrt(longest); // edges scaled to at most 1: no underflow
-  auto e = [&](int i, int a) { return p[i][a] * scale; };
-  const double volume6 = std::abs(e(1, 0) * (e(2, 1) * e(3, 2) - e(2, 2) * e(3, 1)) -
-                                  e(1, 1) * (e(2, 0) * e(3, 2) - e(2, 2) * e(3, 0)) +
-                                  e(1, 2) * (e(2, 0) * e(3, 1) - e(2, 1) * e(3, 0)));
-  return volume6;
+  return std::abs(dot(v[1], cross(v[2], v[3]))) / (longest * longest * longest);
 }
 
 /// Fills the outside of the domain that the tetrahedra `cells` of `points`
