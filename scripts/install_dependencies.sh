@@ -6,6 +6,8 @@
 set -euo pipefail
 
 packages=(g++ make cmake libcgal-dev libboost-dev libgmp-dev libmpfr-dev libeigen3-dev catch2 libcli11-dev nlohmann-json3-dev zlib1g-dev python3-matplotlib)
+# number_of_threads(n) runs on TBB's threads (as CGAL's parallel algorithms).
+packages+=(libtbb-dev)
 # The benchmarks compare with TetGen (the program, and its optimizer through libtet) when it is there.
 packages+=(tetgen libtet1.5-dev)
 # The conjecture laboratory enumerates triangulations with TOPCOM (and its tests do).

@@ -23,6 +23,7 @@
 #define CGAL_EDGE_SWAPPING_3_H
 
 #include <CGAL/Edge_swapping_3/parameters.h>
+#include <CGAL/Edge_swapping_3/Exact_predicates.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/Five_point_configuration.h>
 #include <CGAL/Edge_swapping_3/Flip_plan.h>

@@ -1331,3 +1331,35 @@ TEST_CASE("The replacement visitor sees every operation of the quality driver - 
     REQUIRE(tr.is_valid());
   }
 }
+
+TEST_CASE("Delaunay repair of a domain mesh whose failing facets are all constrained ends stuck on both schedules", "[drivers]")
+{
+  // Every facet is a boundary facet: no flip is allowed, so the helper's
+  // first round tags and its second changes nothing. No state can progress.
+  for(auto schedule : {ES::WORK_QUEUE, ES::PAPER_CYCLES})
+  {
+    const unsigned seed = 3;
+    INFO("random_in_cube(200, " << seed << "), placing start, "
+                                << (schedule == ES::WORK_QUEUE ? "work queue" : "paper cycles"));
+    Domain_tr tr;
+    ES::insert_by_placing(tr, random_in_cube(200, seed));
+    for(auto c : tr.all_cell_handles())
+    {
+      c->info().subdomain = tr.is_infinite(c) ? 0 : 1;
+      for(int i = 0; i < 4; ++i) c->info().facet_reference[i] = 1;
+    }
+    const auto cells = cell_set(tr);
+    const long long failing = (long long)ES::internal::number_of_non_delaunay_facets(tr, ES::CGAL_PERTURBATION);
+    REQUIRE(failing > 0);
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
+                                    ES::parameters::mesh_constraints(ES::Domain_constraints(), ES::parameters::schedule(schedule)));
+    REQUIRE(r.ending == ES::STUCK);
+    REQUIRE(r.non_delaunay_facets == failing);
+    REQUIRE(r.repair_path == ES::HELPER_FLIPS);
+    REQUIRE(r.helper_rounds == 2);
+    REQUIRE(r.cycles.back().rule == ES::HELPER_RULE);
+    REQUIRE(r.cycles.back().total_swaps() == 0);
+    REQUIRE(r.cycles.back().new_tags == 0);
+    REQUIRE(cell_set(tr) == cells);
+  }
+}

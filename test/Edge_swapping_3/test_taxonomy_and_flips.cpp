@@ -4,6 +4,12 @@
 // sequences that must keep the triangulation valid and its volume exact.
 
 #include "test_common.h"
+#include <CGAL/Random.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Gmpq.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <map>
 
 using namespace test;
 
@@ -192,4 +198,107 @@ TEST_CASE("Random flip sequences keep the triangulation valid - its vertices and
       if(family.name == "grid" || family.name == "planes")
         REQUIRE(made[2] + made[3] > 0); // the planar flips were exercised
     }
+}
+
+namespace {
+
+// The whole combinatorial state of a triangulation, read in storage order:
+// per cell its vertices and neighbours as storage ranks and its data; per
+// vertex the rank of its cell. Two triangulations copied from one and
+// changed alike read the same.
+template <class T, class Data>
+std::vector<long> storage_state(const T& tr, Data data)
+{
+  std::map<const void*, long> vertex_rank, cell_rank;
+  for(auto v = tr.tds().vertices().begin(); v != tr.tds().vertices().end(); ++v)
+    vertex_rank.emplace(&*v, long(vertex_rank.size()));
+  for(auto c = tr.tds().cells().begin(); c != tr.tds().cells().end(); ++c) cell_rank.emplace(&*c, long(cell_rank.size()));
+  std::vector<long> s;
+  for(auto c = tr.tds().cells().begin(); c != tr.tds().cells().end(); ++c)
+  {
+    for(int i = 0; i < 4; ++i)
+    {
+      s.push_back(vertex_rank.at(&*c->vertex(i)));
+      s.push_back(cell_rank.at(&*c->neighbor(i)));
+    }
+    data(c, s);
+  }
+  for(auto v = tr.tds().vertices().begin(); v != tr.tds().vertices().end(); ++v) s.push_back(cell_rank.at(&*v->cell()));
+  return s;
+}
+
+// The k-th cell in storage order.
+template <class T>
+typename T::Cell_handle cell_at(const T& tr, std::size_t k)
+{
+  auto c = tr.tds().cells().begin();
+  std::advance(c, k);
+  return c;
+}
+
+} // namespace
+
+TEST_CASE("The direct 2-3 and 3-2 flips leave the triangulation as the flip by matching facets does", "[flips]")
+{
+  // The same random flips on two copies: the plans of `classify_facet`
+  // carried out directly in one, by matching facets in the other (the way
+  // every other plan is). Facet data (the boundary references) and cell data
+  // must follow alike.
+  typedef CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_3<K>,
+                                               CGAL::Triangulation_cell_base_with_info_3<ES::Domain_cell_info, K>>
+    Domain_tds;
+  typedef CGAL::Triangulation_3<K, Domain_tds> Domain_tr;
+  auto data = [](Domain_tr::Cell_handle c, std::vector<long>& s) {
+    s.push_back(c->info().subdomain);
+    for(int i = 0; i < 4; ++i) s.push_back(c->info().facet_reference[i]);
+  };
+  std::size_t direct[2] = {0, 0};
+  for(unsigned seed = 1; seed <= 3; ++seed)
+  {
+    INFO("random_in_cube(60, " << seed << "), placing start, random facets from seed " << seed);
+    Domain_tr start;
+    ES::insert_by_placing(start, random_in_cube(60, seed));
+    int reference = 0;
+    for(auto c : start.all_cell_handles())
+    {
+      c->info().subdomain = start.is_infinite(c) ? 0 : 1 + (reference % 3);
+      for(int i = 0; i < 4; ++i) c->info().facet_reference[i] = reference++ % 5 == 0 ? reference : -1;
+    }
+    Domain_tr a = start, b = start;
+    REQUIRE(storage_state(a, data) == storage_state(b, data));
+    CGAL::Random rng(seed);
+    for(int step = 0; step < 400; ++step)
+    {
+      const std::size_t k = rng.get_int(0, int(a.tds().cells().size()));
+      const int i = rng.get_int(0, 4);
+      const auto ca = cell_at(a, k), cb = cell_at(b, k);
+      if(a.is_infinite(ca)) continue;
+      const auto conf_a = ES::classify_facet(a, ca, i);
+      const auto conf_b = ES::classify_facet(b, cb, i);
+      REQUIRE(conf_a.kind() == conf_b.kind());
+      if(!conf_a.is_swappable()) continue;
+      auto plan_b = conf_b.flip_plan();
+      const bool planned_at_facet = plan_b.facet_index >= 0;
+      REQUIRE(planned_at_facet == (conf_a.kind() == ES::TWO_TETRAHEDRA_CONVEX || conf_a.kind() == ES::THREE_TETRAHEDRA_CONVEX));
+      plan_b.facet_index = plan_b.reflex_index = -1; // by matching
+      std::array<Domain_tr::Cell_handle, 4> made_a, made_b;
+      const int na = ES::flip(a, conf_a, made_a, ES::Domain_constraints());
+      const int nb = ES::execute_flip(b, plan_b, made_b, ES::Domain_constraints());
+      REQUIRE(na == nb);
+      if(planned_at_facet) ++direct[conf_a.kind()];
+      REQUIRE(storage_state(a, data) == storage_state(b, data));
+    }
+    REQUIRE(a.is_valid());
+  }
+  WARN(direct[0] << " direct 2-3 flips and " << direct[1] << " direct 3-2 flips compared");
+  REQUIRE(direct[0] > 20);
+  REQUIRE(direct[1] > 20);
+}
+
+TEST_CASE("Kernels with exact predicates are told from those that round", "[flips]")
+{
+  STATIC_REQUIRE(ES::Has_exact_predicates<K>::value);
+  STATIC_REQUIRE(ES::Has_exact_predicates<CGAL::Exact_predicates_exact_constructions_kernel>::value);
+  STATIC_REQUIRE(ES::Has_exact_predicates<CGAL::Simple_cartesian<CGAL::Gmpq>>::value);
+  STATIC_REQUIRE(!ES::Has_exact_predicates<CGAL::Simple_cartesian<double>>::value);
 }

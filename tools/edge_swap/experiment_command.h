@@ -206,9 +206,9 @@ inline int run_experiment(const Experiment_options& opt)
   }
   out.close();
   if(!out) throw Usage_error("cannot write '" + opt.output + "'");
-  const unsigned wanted = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-  if(threads < wanted)
-    std::cerr << "experiment: warning: only " << threads << " of " << wanted << " threads could start\n";
+  if(opt.threads > threads)
+    std::cerr << "experiment: warning: built without TBB, so " << threads << " thread ran of " << opt.threads
+              << " asked\n";
   std::cerr << "experiment: " << finished << " instances in " << timer.time() << " s on " << threads << " threads\n";
   IO::print_results_summary(opt.output, IO::read_results_file(opt.output, false), std::cout);
   return 0;

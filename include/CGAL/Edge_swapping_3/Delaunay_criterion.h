@@ -29,6 +29,7 @@ namespace internal {
 template <class Tr>
 bool is_locally_delaunay(const Tr& tr, typename Tr::Cell_handle c, int i, Perturbation perturbation)
 {
+  internal::require_exact_predicates<typename Tr::Geom_traits>();
   const bool perturb = (perturbation == CGAL_PERTURBATION);
   const auto n = c->neighbor(i);
   const auto m = n->vertex(n->index(c));

@@ -8,6 +8,7 @@
 #define CGAL_EDGE_SWAPPING_3_FIVE_POINT_CONFIGURATION_H
 
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <CGAL/Edge_swapping_3/Exact_predicates.h>
 #include <CGAL/Edge_swapping_3/Flip_plan.h>
 #include <CGAL/Edge_swapping_3/internal/edge_ring.h>
 
@@ -104,6 +105,7 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
+  internal::require_exact_predicates<typename Tr::Geom_traits>();
   CGAL_precondition(tr.dimension() == 3);
 
   Five_point_configuration<Tr> conf;
@@ -138,12 +140,7 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
   auto& plan = conf.plan_;
   if(pos == 3)
   {
-    plan.kind = FLIP_2_3;
-    plan.add_old_cell(c);
-    plan.add_old_cell(n);
-    const auto t = internal::tuple_of<Tr>(c);
-    for(int k = 0; k < 4; ++k)
-      if(k != i) plan.add_new_cell(internal::replaced(t, c->vertex(k), e));
+    internal::plan_flip_2_3(plan, c, i);
     conf.kind_ = TWO_TETRAHEDRA_CONVEX;
     return conf;
   }
@@ -169,15 +166,7 @@ Five_point_configuration<Tr> classify_facet(const Tr& tr, typename Tr::Cell_hand
     conf.ring_edge_ = {c->vertex(a), c->vertex(b)};
     if(t->has_vertex(e))
     {
-      // Old cells in turning order around the edge, as CGAL's circulator gives them.
-      const bool n_next = (Tr::next_around_edge(a, b) == i);
-      plan.kind = FLIP_3_2;
-      plan.add_old_cell(c);
-      plan.add_old_cell(n_next ? n : t);
-      plan.add_old_cell(n_next ? t : n);
-      const auto tc = internal::tuple_of<Tr>(c);
-      plan.add_new_cell(internal::replaced(tc, c->vertex(b), e));
-      plan.add_new_cell(internal::replaced(tc, c->vertex(a), e));
+      internal::plan_flip_3_2(plan, c, i, k_neg);
       conf.kind_ = THREE_TETRAHEDRA_CONVEX;
     }
     return conf;

@@ -49,6 +49,8 @@ struct Flip_plan
   int number_of_new_cells = 0;           ///< the cells it makes
   std::array<Cell_handle, 4> old_cells;  ///< `old_cells[0 .. number_of_old_cells)`
   std::array<Tuple, 4> new_cells;        ///< `new_cells[0 .. number_of_new_cells)`
+  int facet_index = -1;  ///< 2-3 and 3-2 plans of `classify_facet()`: the facet's index in `old_cells[0]` (then glued directly); else -1
+  int reflex_index = -1; ///< 3-2 plans of `classify_facet()`: the index in `old_cells[0]` of the facet the apex lies beyond; else -1
 
   /// Appends a cell to be made.
   void add_new_cell(const Tuple& t) { new_cells[number_of_new_cells++] = t; }
@@ -92,6 +94,51 @@ template <class Tuple, class Vertex_handle>
 bool contains(const Tuple& t, Vertex_handle v)
 {
   return t[0] == v || t[1] == v || t[2] == v || t[3] == v;
+}
+
+/// The 2-3 flip of the interior facet `(c, i)`: `c` and its neighbour `n`
+/// become three cells, `c` with its vertex `k` replaced by the apex of `n`
+/// for each `k != i` in increasing order.
+template <class Tr>
+void plan_flip_2_3(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i)
+{
+  const auto n = c->neighbor(i);
+  const auto e = n->vertex(n->index(c));
+  plan = Flip_plan<Tr>();
+  plan.kind = FLIP_2_3;
+  plan.add_old_cell(c);
+  plan.add_old_cell(n);
+  const auto t = tuple_of<Tr>(c);
+  for(int k = 0; k < 4; ++k)
+    if(k != i) plan.add_new_cell(replaced(t, c->vertex(k), e));
+  plan.facet_index = i;
+}
+
+/// The 3-2 flip at the interior facet `(c, i)` whose apex lies beyond the
+/// facet `k` of `c`, where the edge `(a, b)` of `c` opposite `i` and `k`
+/// (`a < b`) has the three cells `c`, its neighbours `i` and `k`: they
+/// become `c` with `b`, and `c` with `a`, replaced by the apex. The old
+/// cells are listed in turning order around the edge, as CGAL's circulator
+/// gives them.
+template <class Tr>
+void plan_flip_3_2(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i, int k)
+{
+  const auto n = c->neighbor(i), t = c->neighbor(k);
+  const auto e = n->vertex(n->index(c));
+  int a = -1, b = -1;
+  for(int m = 0; m < 4; ++m)
+    if(m != i && m != k) (a < 0 ? a : b) = m;
+  const bool n_next = (Tr::next_around_edge(a, b) == i);
+  plan = Flip_plan<Tr>();
+  plan.kind = FLIP_3_2;
+  plan.add_old_cell(c);
+  plan.add_old_cell(n_next ? n : t);
+  plan.add_old_cell(n_next ? t : n);
+  const auto tc = tuple_of<Tr>(c);
+  plan.add_new_cell(replaced(tc, c->vertex(b), e));
+  plan.add_new_cell(replaced(tc, c->vertex(a), e));
+  plan.facet_index = i;
+  plan.reflex_index = k;
 }
 
 } // namespace internal
@@ -152,20 +199,147 @@ Orientation worst_orientation(const Tr& tr, const Flip_plan<Tr>& plan)
   return worst;
 }
 
-/// Carries out a valid plan: the old cells are replaced by the new ones and
-/// glued to the outside. Old cells are reused in place, so handles to them
-/// name other tetrahedra afterwards. Writes the handles of the new cells to
-/// `created` and returns their number. Purely combinatorial. The new cells
-/// take the cell data of the old ones (one subdomain), and each keeps the
-/// facet data of the old facet it shares with the outside (`constraints`).
-template <class Tr, class Constraints = No_constraints>
-int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
-                 std::array<typename Tr::Cell_handle, 4>& created,
-                 const Constraints& constraints = Constraints())
+namespace internal {
+
+// The cells of a plan made: the old cells reused in place first (a reused
+// cell is a new cell: no mark, such as the helper's tag), then new ones, all
+// with the cell data of the first old cell (one subdomain).
+template <class Tr, class Constraints>
+void make_planned_cells(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
+                        const Constraints& constraints)
+{
+  const auto cell_data = constraints.cell_data(plan.old_cells[0]);
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+  {
+    const auto& t = plan.new_cells[k];
+    if(k < plan.number_of_old_cells)
+    {
+      created[k] = plan.old_cells[k];
+      created[k]->set_vertices(t[0], t[1], t[2], t[3]);
+      created[k]->tds_data().clear();
+    }
+    else
+      created[k] = tr.tds().create_cell(t[0], t[1], t[2], t[3]);
+    constraints.set_cell_data(created[k], cell_data);
+  }
+}
+
+// The last step of every flip: each vertex points to a new cell, and the old
+// cells not reused are freed.
+template <class Tr>
+int finish_flip(Tr& tr, const Flip_plan<Tr>& plan, const std::array<typename Tr::Cell_handle, 4>& created)
+{
+  for(int k = 0; k < plan.number_of_new_cells; ++k)
+    for(int i = 0; i < 4; ++i) created[k]->vertex(i)->set_cell(created[k]);
+  for(int k = plan.number_of_new_cells; k < plan.number_of_old_cells; ++k) tr.tds().delete_cell(plan.old_cells[k]);
+  return plan.number_of_new_cells;
+}
+
+// A facet of an old cell on the boundary of the flipped region: the cell
+// outside, the facet's index there, and the data the old cell had on it.
+template <class Tr, class Constraints>
+struct Outer_facet
+{
+  typename Tr::Cell_handle cell;
+  int index;
+  typename Constraints::Facet_data data;
+
+  Outer_facet() = default;
+  Outer_facet(typename Tr::Cell_handle old, int i, const Constraints& constraints)
+      : cell(old->neighbor(i)), index(cell->index(old)), data(constraints.facet_data(old, i)) {}
+
+  // Glued to the facet `i` of the new cell `c`.
+  void glue(typename Tr::Cell_handle c, int i, const Constraints& constraints) const
+  {
+    c->set_neighbor(i, cell);
+    cell->set_neighbor(index, c);
+    constraints.set_facet_data(c, i, data);
+  }
+};
+
+template <class Cell_handle, class Constraints>
+void glue_inner_facet(Cell_handle c, int i, Cell_handle d, int j, const Constraints& constraints)
+{
+  c->set_neighbor(i, d);
+  d->set_neighbor(j, c);
+  constraints.set_facet_data(c, i, constraints.free_facet_data());
+  constraints.set_facet_data(d, j, constraints.free_facet_data());
+}
+
+// A 2-3 plan (plan_flip_2_3) carried out: new cell m is c with its vertex
+// j[m] replaced by the apex; across its facet j[m] is the old outside of c,
+// across its facet i that of n (n's facet opposite c's vertex j[m]), and
+// across its facet j[m'] the new cell m'.
+template <class Tr, class Constraints>
+int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
+                     const Constraints& constraints)
+{
+  const auto c = plan.old_cells[0], n = plan.old_cells[1];
+  const int i = plan.facet_index;
+  std::array<int, 3> j;
+  std::array<Outer_facet<Tr, Constraints>, 3> of_c, of_n;
+  for(int k = 0, m = 0; k < 4; ++k)
+    if(k != i)
+    {
+      j[m] = k;
+      of_c[m] = Outer_facet<Tr, Constraints>(c, k, constraints);
+      of_n[m] = Outer_facet<Tr, Constraints>(n, n->index(c->vertex(k)), constraints);
+      ++m;
+    }
+  make_planned_cells(tr, plan, created, constraints);
+  for(int m = 0; m < 3; ++m)
+  {
+    of_c[m].glue(created[m], j[m], constraints);
+    of_n[m].glue(created[m], i, constraints);
+    for(int l = m + 1; l < 3; ++l) glue_inner_facet(created[m], j[l], created[l], j[m], constraints);
+  }
+  return finish_flip(tr, plan, created);
+}
+
+// A 3-2 plan (plan_flip_3_2) carried out: new cell 0 is c with b replaced by
+// the apex, new cell 1 c with a replaced; across the facet of each opposite
+// the apex is the old outside of c, across its facets i and k those of n and
+// t opposite the replaced vertex, and across the last the other new cell.
+template <class Tr, class Constraints>
+int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
+                     const Constraints& constraints)
+{
+  const auto c = plan.old_cells[0];
+  const int i = plan.facet_index, k = plan.reflex_index;
+  const auto n = c->neighbor(i), t = c->neighbor(k);
+  int a = -1, b = -1;
+  for(int m = 0; m < 4; ++m)
+    if(m != i && m != k) (a < 0 ? a : b) = m;
+  typedef Outer_facet<Tr, Constraints> Outer;
+  // r[0] = b is replaced in new cell 0, r[1] = a in new cell 1.
+  const std::array<int, 2> r = {b, a};
+  std::array<Outer, 2> of_c, of_n, of_t;
+  for(int m = 0; m < 2; ++m)
+  {
+    const auto v = c->vertex(r[m]);
+    of_c[m] = Outer(c, r[m], constraints);
+    of_n[m] = Outer(n, n->index(v), constraints);
+    of_t[m] = Outer(t, t->index(v), constraints);
+  }
+  make_planned_cells(tr, plan, created, constraints);
+  for(int m = 0; m < 2; ++m)
+  {
+    of_c[m].glue(created[m], r[m], constraints);
+    of_n[m].glue(created[m], i, constraints);
+    of_t[m].glue(created[m], k, constraints);
+  }
+  glue_inner_facet(created[0], a, created[1], b, constraints);
+  return finish_flip(tr, plan, created);
+}
+
+// Any valid plan carried out: each facet of a new cell glued to the outside
+// or to another new cell by matching vertices.
+template <class Tr, class Constraints>
+int execute_flip_by_matching(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
+                             const Constraints& constraints)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
-  auto& tds = tr.tds();
 
   // A facet is matched by the sum of its vertex addresses first (cheap), then
   // by its vertices; addresses only serve the search, never a decision.
@@ -175,7 +349,6 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
     std::array<Vertex_handle, 3> v;
     Cell_handle cell;
     int index;
-    typename Constraints::Facet_data data;
     bool glued;
   };
   auto slot_of = [](Cell_handle c, int i) {
@@ -197,6 +370,7 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
 
   // The facets on the boundary of the old cells, seen from the cell outside them.
   std::array<Facet_slot, 8> outside;
+  std::array<Outer_facet<Tr, Constraints>, 8> outer;
   int n_out = 0;
   auto is_old = [&](Cell_handle c) {
     for(int k = 0; k < plan.number_of_old_cells; ++k)
@@ -208,33 +382,14 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
     Cell_handle c = plan.old_cells[k];
     for(int i = 0; i < 4; ++i)
     {
-      Cell_handle nb = c->neighbor(i);
-      if(is_old(nb)) continue;
+      if(is_old(c->neighbor(i))) continue;
       CGAL_assertion(n_out < 8);
-      Facet_slot& o = outside[n_out++];
-      o = slot_of(c, i);
-      o.cell = nb;
-      o.index = nb->index(c);
-      o.data = constraints.facet_data(c, i);
+      outside[n_out] = slot_of(c, i);
+      outer[n_out++] = Outer_facet<Tr, Constraints>(c, i, constraints);
     }
   }
-  const auto cell_data = constraints.cell_data(plan.old_cells[0]);
+  make_planned_cells(tr, plan, created, constraints);
 
-  for(int k = 0; k < plan.number_of_new_cells; ++k)
-  {
-    const auto& t = plan.new_cells[k];
-    if(k < plan.number_of_old_cells)
-    {
-      created[k] = plan.old_cells[k];
-      created[k]->set_vertices(t[0], t[1], t[2], t[3]);
-      created[k]->tds_data().clear(); // a reused cell is a new cell: no mark (the helper's tag)
-    }
-    else
-      created[k] = tds.create_cell(t[0], t[1], t[2], t[3]);
-    constraints.set_cell_data(created[k], cell_data);
-  }
-
-  // Glue each facet of a new cell to the outside or to another new cell.
   std::array<Facet_slot, 16> inner;
   int n_in = 0;
   for(int k = 0; k < plan.number_of_new_cells; ++k)
@@ -245,30 +400,40 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
       for(int m = 0; m < n_out && !glued; ++m)
         if(same_facet(outside[m], f))
         {
-          created[k]->set_neighbor(i, outside[m].cell);
-          outside[m].cell->set_neighbor(outside[m].index, created[k]);
-          constraints.set_facet_data(created[k], i, outside[m].data);
+          outer[m].glue(created[k], i, constraints);
           glued = true;
         }
       for(int m = 0; m < n_in && !glued; ++m)
         if(!inner[m].glued && same_facet(inner[m], f))
         {
-          created[k]->set_neighbor(i, inner[m].cell);
-          inner[m].cell->set_neighbor(inner[m].index, created[k]);
-          constraints.set_facet_data(created[k], i, constraints.free_facet_data());
-          constraints.set_facet_data(inner[m].cell, inner[m].index, constraints.free_facet_data());
+          glue_inner_facet(created[k], i, inner[m].cell, inner[m].index, constraints);
           inner[m].glued = glued = true;
         }
       if(!glued) inner[n_in++] = f;
     }
   CGAL_assertion_code(for(int m = 0; m < n_in; ++m) CGAL_assertion(inner[m].glued);)
-  for(int k = 0; k < plan.number_of_new_cells; ++k)
-    for(int i = 0; i < 4; ++i)
-      created[k]->vertex(i)->set_cell(created[k]);
+  return finish_flip(tr, plan, created);
+}
 
-  for(int k = plan.number_of_new_cells; k < plan.number_of_old_cells; ++k)
-    tds.delete_cell(plan.old_cells[k]);
-  return plan.number_of_new_cells;
+} // namespace internal
+
+/// Carries out a valid plan: the old cells are replaced by the new ones and
+/// glued to the outside. Old cells are reused in place, so handles to them
+/// name other tetrahedra afterwards. Writes the handles of the new cells to
+/// `created` and returns their number. Purely combinatorial. The new cells
+/// take the cell data of the old ones (one subdomain), and each keeps the
+/// facet data of the old facet it shares with the outside (`constraints`).
+/// This is the package's one flip: every driver, the Delaunay repair, flip
+/// insertion and scrambling make their flips through it.
+template <class Tr, class Constraints = No_constraints>
+int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
+                 std::array<typename Tr::Cell_handle, 4>& created,
+                 const Constraints& constraints = Constraints())
+{
+  if(plan.facet_index >= 0)
+    return plan.kind == FLIP_2_3 ? internal::execute_flip_2_3(tr, plan, created, constraints)
+                                 : internal::execute_flip_3_2(tr, plan, created, constraints);
+  return internal::execute_flip_by_matching(tr, plan, created, constraints);
 }
 
 } // namespace Edge_swapping_3

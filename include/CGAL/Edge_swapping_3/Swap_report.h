@@ -37,10 +37,25 @@ enum Face_order
   PRIORITY_ORDER
 };
 
+/// The rule a round applied at each facet it visited.
+enum Round_rule
+{
+  PLAIN_RULE,  ///< Algorithm 2 under the criterion (for Delaunay: plain flips)
+  HELPER_RULE  ///< Algorithm 4, the helper strategy
+};
+
+/// The name of `r`, for reports.
+inline const char* round_rule_name(Round_rule r)
+{
+  static const char* names[] = {"plain", "helper"};
+  return names[r];
+}
+
 /// What one round (one cycle of the paper) did.
 struct Cycle_record
 {
   std::size_t cycle = 0;                                  ///< 1 for the first round
+  Round_rule rule = PLAIN_RULE;                           ///< the rule of the round
   std::array<std::size_t, number_of_flip_kinds> swaps{};  ///< indexed by `Flip_kind`
   std::size_t visits = 0;                                 ///< facets visited
   std::size_t new_tags = 0;                               ///< helper: cells tagged in this round
@@ -68,17 +83,19 @@ inline const char* swap_ending_name(Swap_ending e)
 }
 
 /// The steps of the Delaunay repair of `swap_edges`, in the order it tries them.
+/// A repair that did not converge names its last step.
 enum Delaunay_repair_path
 {
-  PLAIN_FLIPS,   ///< Algorithm 3 with the Delaunay criterion reached the Delaunay triangulation
-  HELPER_FLIPS,  ///< plain flips were stuck; the helper strategy finished the work
-  REBUILT        ///< the helper had not converged within its bound; the cells were rebuilt
+  PLAIN_FLIPS,              ///< Algorithm 3 with the Delaunay criterion reached the Delaunay triangulation
+  HELPER_FLIPS,             ///< plain flips were stuck; a round of the helper strategy finished the work
+  PLAIN_FLIPS_AFTER_HELPER, ///< plain flips were stuck; after the helper's rounds, plain flips finished the work
+  REBUILT                   ///< the helper had not converged within its bound; the cells were rebuilt
 };
 
 /// The name of `p`, for reports.
 inline const char* delaunay_repair_path_name(Delaunay_repair_path p)
 {
-  static const char* names[] = {"plain flips", "helper flips", "rebuilt"};
+  static const char* names[] = {"plain flips", "helper flips", "plain flips after helper", "rebuilt"};
   return names[p];
 }
 
@@ -92,7 +109,7 @@ struct Swap_report
   long long non_delaunay_facets = -1;
   double seconds = 0; ///< the time of the run
 
-  /// Delaunay repair only: the last step taken.
+  /// Delaunay repair only: the step that finished the work (the last one taken if none did).
   Delaunay_repair_path repair_path = PLAIN_FLIPS;
   long long stuck_after_plain_flips = 0; ///< Delaunay repair: the non-Delaunay facets plain flips left
   /// Delaunay repair: the rounds of the helper strategy (not those of plain

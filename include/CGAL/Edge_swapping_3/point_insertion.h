@@ -180,7 +180,7 @@ Link_flip_outcome flip_common_link_facet(Tr& tr, typename Tr::Cell_handle c, int
   const internal::Common_flip flip = internal::common_flip_at(tr, c, i);
   if(flip.kind == internal::NEEDS_GENERAL_FLIP) return LINK_NEEDS_GENERAL_FLIP;
   if(flip.kind == internal::NOT_FLIPPABLE_NOW) return LINK_NOT_FLIPPABLE_NOW;
-  std::array<typename Tr::Cell_handle, 3> made;
+  std::array<typename Tr::Cell_handle, 4> made;
   const int m = internal::make_common_flip(tr, c, i, flip, made);
   for(int k = 0; k < m; ++k) push_link_cell<Tr>(queue, made[k]); // a 3-2 cell may be queued already
   ++result.swaps[m == 3 ? FLIP_2_3 : FLIP_3_2];

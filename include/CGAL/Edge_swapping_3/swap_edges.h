@@ -50,6 +50,7 @@ Driver_settings driver_settings(const NamedParameters& np, Face_order default_or
 template <class Criterion>
 struct Criterion_rule
 {
+  static constexpr Round_rule round_rule = PLAIN_RULE;
   const Criterion& criterion;
   Perturbation perturbation; // the tie-breaking of a Delaunay criterion's test
 
@@ -84,6 +85,7 @@ struct Helper_rule
 {
   Helper_swap_condition condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS; // Helper_reading::swap_condition
   static constexpr bool reads_only_cells_and_tags = true; // a fixed-order run that comes back to a state loops
+  static constexpr Round_rule round_rule = HELPER_RULE;
 
   template <class Driver, class Cell_handle>
   void operator()(Driver& d, Cell_handle c, int i) const
@@ -243,7 +245,6 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 
     // Stuck (or out of rounds): the helper, then the rebuild.
     report.stuck_after_plain_flips = report.non_delaunay_facets;
-    report.repair_path = HELPER_FLIPS;
     report.first_helper_round = report.cycles.size() + 1;
     Driver_settings hs = driver_settings(np, RANDOM_ORDER);
     const std::size_t helper_rounds =
@@ -270,6 +271,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
       std::vector<Facet_key<Tr>> left;
       const Swap_report helper = run_helper(tr, hs, constraints, np, stuck, &left);
       report.helper_rounds += helper.number_of_cycles();
+      report.repair_path = HELPER_FLIPS;
       append(helper);
       if(report.ending == CONVERGED || !lawson || helper.number_of_cycles() == 0) break;
       Facets seeds;
@@ -281,6 +283,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
       }
       stuck.clear();
       const std::size_t n_seeds = seeds.size();
+      report.repair_path = PLAIN_FLIPS_AFTER_HELPER;
       append(plain_flips(&seeds, n_seeds, stuck));
       if(report.ending == CONVERGED) break;
       ++hs.random_seed; // another order next time
@@ -290,8 +293,9 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
     {
       report.repair_path = REBUILT;
       report.rebuilt_cells = rebuild_as_delaunay(tr);
-      report.ending = CONVERGED;
-      report.non_delaunay_facets = 0;
+      // Flip insertion ends on Delaunay (Joe 1991); counted, not assumed.
+      report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, s.perturbation);
+      report.ending = report.non_delaunay_facets == 0 ? CONVERGED : STUCK;
     }
   }
   report.seconds = total.time();
@@ -312,8 +316,12 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 /// the helper strategy for at most `helper_rounds_before_rebuild` rounds; where
 /// that has not converged, the cells are rebuilt by flip insertion of the
 /// vertices (`delaunay_by_insertion()`; the vertices stay, every cell is
-/// new). `report.repair_path` says which step ended
-/// the work. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
+/// new). `report.repair_path` names the step that finished the work (or
+/// the last one taken, when the ending is not `CONVERGED`), and each round's
+/// `Cycle_record::rule` says whether it was a round of plain flips or of the
+/// helper. Should the rebuild leave a facet not locally Delaunay (a defect:
+/// never observed), the ending is `STUCK` with that count; no other
+/// triangulator stands in. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
 /// whose ending is then `CONVERGED` or `STUCK`. A domain mesh is never
 /// rebuilt: its repair ends after the helper step.
 ///
@@ -398,7 +406,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_threads}
-///     \cgalParamDescription{with a Delaunay criterion on the work queue, the threads of the first round's scan (the in-sphere test of every facet); the run is the same whatever the number}
+///     \cgalParamDescription{with a Delaunay criterion on the work queue, the threads of the first round's scan (the in-sphere test of every facet), TBB's (`CGAL_LINKED_WITH_TBB`; without TBB, one); the run is the same whatever the number}
 ///     \cgalParamType{`unsigned`}
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd

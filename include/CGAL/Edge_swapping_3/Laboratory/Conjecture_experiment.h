@@ -24,9 +24,11 @@
 #include <new>
 #include <stdexcept>
 #include <string>
-#include <system_error>
-#include <thread>
 #include <vector>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -252,7 +254,7 @@ Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
 /// The first error stops the run and is thrown once every thread has
 /// stopped: an exception of the visitor as it is, an error of a case as a
 /// `std::runtime_error` that names the instance. Returns the number of
-/// threads that ran (a thread that cannot start is not fatal).
+/// threads it ran on: TBB's (CGAL_LINKED_WITH_TBB), else one.
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{visitor}
 ///     \cgalParamDescription{sees each instance's case and outcome}
@@ -262,7 +264,7 @@ Conjecture_case<Point> conjecture_case_of(const Conjecture_instance& instance,
 ///   \cgalParamNBegin{number_of_threads}
 ///     \cgalParamDescription{the threads to run on}
 ///     \cgalParamType{`unsigned`}
-///     \cgalParamDefault{0: every core}
+///     \cgalParamDefault{0: every core (one without TBB)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 template <class Point, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -329,28 +331,15 @@ unsigned run_conjecture_experiment(const std::vector<const Conjecture_instance*>
       next = todo.size();
     }
   };
-  // As many threads as can start (at least this one). Thread stacks take
-  // address space until none is left, so 32 MB of it is held back while
-  // they start, for the work.
-  const unsigned wanted = asked ? asked : (std::max)(1u, std::thread::hardware_concurrency());
-  std::unique_ptr<char[]> held_back(new(std::nothrow) char[std::size_t(32) << 20]);
-  std::vector<std::thread> pool;
-  pool.reserve(wanted);
-  for(unsigned t = 1; t < wanted; ++t)
-  {
-    try
-    {
-      pool.emplace_back(work);
-    }
-    catch(const std::system_error&)
-    {
-      break;
-    }
-  }
-  held_back.reset();
-  const unsigned threads = unsigned(pool.size()) + 1;
+  // TBB's threads, as many as asked (or every core); without TBB, this one.
+#ifdef CGAL_LINKED_WITH_TBB
+  const unsigned threads = asked ? asked : unsigned(tbb::this_task_arena::max_concurrency());
+  tbb::task_arena arena{int(threads)};
+  arena.execute([&]() { tbb::parallel_for(0u, threads, [&](unsigned) { work(); }); });
+#else
+  const unsigned threads = 1;
   work();
-  for(auto& t : pool) t.join();
+#endif
   if(error) std::rethrow_exception(error);
   if(out_of_memory) throw std::bad_alloc();
   return threads;

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The two common flips of a facet that is not locally Delaunay, decided by
-// three exact orientation tests and made in place by CGAL's own combinatorial
-// flips (Triangulation_data_structure_3::flip_flippable), with no flip plan:
-// the 2-3 flip when the apex e across the facet (c, i) lies strictly inside
+// three exact orientation tests and made by the package's flip
+// (`execute_flip` of the plan `classify_facet` would make): the 2-3 flip when the apex e across the facet (c, i) lies strictly inside
 // the wedge of c at that facet, the 3-2 flip when it lies strictly beyond
 // exactly one other facet of c and the edge between the two has three cells.
 // These are the signs of the barycentric coordinates of e in c (appendix A),
@@ -15,6 +14,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_COMMON_FLIPS_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_COMMON_FLIPS_H
 
+#include <CGAL/Edge_swapping_3/Exact_predicates.h>
 #include <CGAL/Edge_swapping_3/Flip_plan.h>
 #include <CGAL/Edge_swapping_3/internal/orientations_with_apex.h>
 #include <array>
@@ -42,6 +42,7 @@ struct Common_flip
 template <class Tr>
 Common_flip common_flip_at(const Tr& tr, typename Tr::Cell_handle c, int i)
 {
+  require_exact_predicates<typename Tr::Geom_traits>();
   const auto n = c->neighbor(i);
   if(tr.is_infinite(c) || tr.is_infinite(n)) return {NEEDS_GENERAL_FLIP};
   const auto apex = n->vertex(n->index(c));
@@ -80,24 +81,17 @@ Common_flip common_flip_at(const Tr& tr, typename Tr::Cell_handle c, int i)
 /// returns the number of new cells, put in `made`.
 template <class Tr>
 int make_common_flip(Tr& tr, typename Tr::Cell_handle c, int i, const Common_flip& f,
-                     std::array<typename Tr::Cell_handle, 3>& made)
+                     std::array<typename Tr::Cell_handle, 4>& made)
 {
-  auto& tds = tr.tds();
+  Flip_plan<Tr> plan;
   if(f.kind == COMMON_FLIP_2_3)
+    plan_flip_2_3(plan, c, i);
+  else
   {
-    const auto n = c->neighbor(i);
-    tds.flip_flippable(c, i); // c and n become two of the new cells
-    made = {c, n, c->neighbor((i + 2) & 3)};
-    return 3;
+    CGAL_precondition(f.kind == COMMON_FLIP_3_2);
+    plan_flip_3_2(plan, c, i, f.reflex);
   }
-  CGAL_precondition(f.kind == COMMON_FLIP_3_2);
-  const auto n = c->neighbor(i), t = c->neighbor(f.reflex);
-  int a = -1, b = -1;
-  for(int k = 0; k < 4; ++k)
-    if(k != i && k != f.reflex) (a < 0 ? a : b) = k;
-  tds.flip_flippable(c, a, b); // c goes; n and t become the two new cells
-  made = {n, t, n};
-  return 2;
+  return execute_flip(tr, plan, made);
 }
 
 } // namespace internal

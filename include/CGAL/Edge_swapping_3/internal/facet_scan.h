@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One pass over every interior facet of a triangulation, with a read-only
-// test, split among threads: the facets that fail it, in storage order (the
-// same list whatever the number of threads). The Delaunay work queue's first
+// test, split among threads with TBB (when the program links it, as CGAL's
+// parallel algorithms: CGAL_LINKED_WITH_TBB; else on this thread alone): the
+// facets that fail it, in storage order (the same list whatever the number
+// of threads). The Delaunay work queue's first
 // round is such a pass: a locally Delaunay facet is a visit that decides
 // nothing, so only the facets that fail the in-sphere test need a visit of
 // the driver (which looks up per-cell state and classifies).
@@ -11,12 +13,13 @@
 
 #include <CGAL/Edge_swapping_3/internal/prefetch.h>
 #include <algorithm>
-#include <exception>
 #include <iterator>
-#include <system_error>
-#include <thread>
 #include <utility>
 #include <vector>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
 
 namespace CGAL {
 namespace Edge_swapping_3 {
@@ -25,9 +28,9 @@ namespace internal {
 /// The interior facets `(c, i)` of `tr` (neither cell infinite), each once
 /// (from the cell at the higher address), for which `fails(c, i)` is true,
 /// in the storage order of the cells; and the number of facets tested.
-/// `fails` must only read the triangulation: it runs on `threads` threads
-/// at once, each on a run of the cell container (1: this thread alone). A
-/// thread that cannot start leaves its run to this one.
+/// `fails` must only read the triangulation: it runs on up to `threads`
+/// threads at once (TBB's), each on a run of the cell container (1, or no
+/// TBB: this thread alone). An exception thrown by `fails` is passed on.
 template <class Tr, class Test>
 std::pair<std::vector<std::pair<typename Tr::Cell_handle, int>>, std::size_t>
 failing_interior_facets(Tr& tr, Test fails, unsigned threads = 1)
@@ -36,7 +39,11 @@ failing_interior_facets(Tr& tr, Test fails, unsigned threads = 1)
   typedef std::vector<std::pair<Cell_handle, int>> Facets;
   auto& cells = tr.tds().cells();
   // Below a few thousand cells a thread costs more than it saves.
+#ifdef CGAL_LINKED_WITH_TBB
   threads = (std::max)(1u, (std::min)(threads, unsigned(cells.size() / 4096 + 1)));
+#else
+  threads = 1;
+#endif
   std::vector<Cell_handle> cuts{cells.begin()};
   const std::size_t share = cells.size() / threads;
   for(unsigned t = 1; t < threads; ++t) cuts.push_back(std::next(cuts.back(), std::ptrdiff_t(share)));
@@ -62,42 +69,15 @@ failing_interior_facets(Tr& tr, Test fails, unsigned threads = 1)
     found[t] = std::move(failing);
     tested[t] = n_tested;
   };
-  std::vector<std::exception_ptr> errors(threads);
-  std::vector<std::thread> pool;
-  unsigned started = 1;
-  for(; started < threads; ++started)
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads > 1)
   {
-    try
-    {
-      const unsigned t = started;
-      pool.emplace_back([&, t]() {
-        try
-        {
-          scan(t);
-        }
-        catch(...)
-        {
-          errors[t] = std::current_exception();
-        }
-      });
-    }
-    catch(const std::system_error&)
-    {
-      break;
-    }
+    tbb::task_arena arena{int(threads)};
+    arena.execute([&]() { tbb::parallel_for(0u, threads, [&](unsigned t) { scan(t); }); });
   }
-  try
-  {
+  else
+#endif
     scan(0);
-    for(unsigned t = started; t < threads; ++t) scan(t);
-  }
-  catch(...)
-  {
-    errors[0] = std::current_exception();
-  }
-  for(auto& thread : pool) thread.join();
-  for(const auto& e : errors)
-    if(e) std::rethrow_exception(e);
   Facets all = std::move(found[0]);
   std::size_t all_tested = tested[0];
   for(unsigned t = 1; t < threads; ++t)

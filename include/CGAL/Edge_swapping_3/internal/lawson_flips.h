@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The first round of the Delaunay repair on an unconstrained triangulation:
 // plain flips (Lawson's, in three dimensions) from the facets the scan found
-// not locally Delaunay, made by CGAL's own 2-3 and 3-2 flips (common_flips.h)
+// not locally Delaunay, made by the package's 2-3 and 3-2 flips (common_flips.h)
 // with a first-in first-out queue of cells, the way flip-based insertion
 // flips a link. The driver's queue, per-slot state and edge-ring watches cost
 // several times the flip itself; far from Delaunay (a placing start) nearly
@@ -78,7 +78,7 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
     compact_at = (std::max)(compact_at, 2 * kept);
     ++result.compactions;
   };
-  std::array<Cell_handle, 3> made;
+  std::array<Cell_handle, 4> made;
   bool progress = false;
   // Tests the interior facet (c, i); flips it if it fails and a common flip
   // makes it, queueing the new cells (true: c is gone or new); else sets c aside.
@@ -96,7 +96,7 @@ Lawson_flips_result<Tr> lawson_flips(Tr& tr, std::vector<std::pair<typename Tr::
       }
       return false;
     }
-    c->tds_data().clear(); // c goes (3-2) or is a new cell (2-3)
+    c->tds_data().clear(); // c is a new cell
     const int m = make_common_flip(tr, c, i, flip, made);
     for(int k = 0; k < m; ++k) push(made[k]);
     ++result.swaps[m == 3 ? FLIP_2_3 : FLIP_3_2];

@@ -73,6 +73,14 @@ template <class Rule>
 struct Reads_only_cells_and_tags<Rule, std::void_t<decltype(Rule::reads_only_cells_and_tags)>>
   : std::bool_constant<Rule::reads_only_cells_and_tags> {};
 
+/// The rule a driver applies, for its rounds' records: `Rule::round_rule`,
+/// else the plain rule (Algorithm 2 under a criterion).
+template <class Rule, class = void>
+struct Round_rule_of : std::integral_constant<Round_rule, PLAIN_RULE> {};
+template <class Rule>
+struct Round_rule_of<Rule, std::void_t<decltype(Rule::round_rule)>>
+  : std::integral_constant<Round_rule, Rule::round_rule> {};
+
 /// A visitor given by value or through `std::ref`.
 template <class T>
 T& unwrap(T& t) { return t; }
@@ -316,6 +324,7 @@ public:
       std::is_same<std::decay_t<decltype(unwrap(std::declval<Visitor&>()))>, Default_flip_visitor>::value;
     skip_repeats_ = settings_.skip_repeated_cycles && settings_.face_order == PRIORITY_ORDER &&
                     Reads_only_cells_and_tags<Rule>::value && plain_visitor && !tracing;
+    round_rule_ = Round_rule_of<Rule>::value;
     kept_round_ = 0;
     kept_for_ = 1;
     candidate_round_ = 0;
@@ -751,6 +760,7 @@ private:
 
   void end_round(Swap_report& report)
   {
+    record_.rule = round_rule_;
     record_.cells = number_of_finite_cells();
     if(settings_.record_non_delaunay_facets)
       record_.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr_, settings_.perturbation);
@@ -1321,12 +1331,21 @@ private:
       }
       current_cell_ = Cell_handle();
       end_round(report);
+      // No swap and no new tag: every later round would visit the same
+      // facets in the same state and decide the same, so the run can make no
+      // progress (the Delaunay ending then says STUCK, as on the cycles).
+      if(cycle_ends_run())
+      {
+        report.ending = CONVERGED;
+        break;
+      }
     }
     return report;
   }
 
   Tr& tr_;
   const Driver_settings& settings_;
+  Round_rule round_rule_ = PLAIN_RULE; // the rule of the run, for the reports
   const Constraints& constraints_;
   Visitor& visitor_;
   CGAL::Random rng_;
