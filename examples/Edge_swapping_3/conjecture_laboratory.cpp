@@ -8,6 +8,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/edge_swapping_3.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
+#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
+#include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
 #include <iostream>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;

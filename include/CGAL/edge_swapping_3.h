@@ -2,7 +2,9 @@
 //
 // Edge_swapping_3: the 3-D edge-swapping method of Gandhi and Barth (1993) on
 // CGAL::Triangulation_3. The umbrella header: it brings in the whole public
-// API except the file readers and writers (CGAL/Edge_swapping_3/IO/).
+// API except the file readers and writers (CGAL/Edge_swapping_3/IO/) and the
+// conjecture laboratory (CGAL/Edge_swapping_3/Laboratory/, which needs
+// nlohmann-json: include its headers where you use it).
 //
 //   CGAL::swap_edges(tr, criterion, np)                 Algorithm 3, any criterion
 //   CGAL::swap_edges_with_helper(tr, np)                Algorithm 4, the helper strategy
@@ -11,7 +13,6 @@
 //   ES::refine_by_aspect_ratio(tr, target, criterion, np), ES::refine_by_gradient(tr, value, criterion, np)
 //   ES::remove_edge, ES::remove_edge_in_two_steps, ES::remove_faces, ES::smooth_vertex
 //   ES::improve_worst_tetrahedra(tr, criterion, np)     worst first, every operation
-//   ES::run_conjecture_case(c), ES::run_conjecture_experiment(...)  the conjecture laboratory
 //   ES::Mesh_with_fields, ES::build_numbered_mesh(tr, mesh)          meshes as files hold them
 //
 // CGAL/Edge_swapping_3/make_two_spheres_mesh.h (the demonstration domain,
@@ -52,8 +53,5 @@
 #include <CGAL/Edge_swapping_3/Mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/mesh_with_fields_from_complex.h>
 #include <CGAL/Edge_swapping_3/Two_spheres_domain.h>
-#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
-#include <CGAL/Edge_swapping_3/Laboratory/shrink_conjecture_case.h>
-#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_experiment.h>
 
 #endif // CGAL_EDGE_SWAPPING_3_H

@@ -52,6 +52,14 @@ struct Flip_plan
   int facet_index = -1;  ///< 2-3 and 3-2 plans of `classify_facet()`: the facet's index in `old_cells[0]` (then glued directly); else -1
   int reflex_index = -1; ///< 3-2 plans of `classify_facet()`: the index in `old_cells[0]` of the facet the apex lies beyond; else -1
 
+  /// Empties the plan for a new flip of kind `k` (the handle arrays are
+  /// left as they are: only their first cells count).
+  void reset(Flip_kind k)
+  {
+    kind = k;
+    number_of_old_cells = number_of_new_cells = 0;
+    facet_index = reflex_index = -1;
+  }
   /// Appends a cell to be made.
   void add_new_cell(const Tuple& t) { new_cells[number_of_new_cells++] = t; }
   /// Appends a cell to be removed.
@@ -104,8 +112,7 @@ void plan_flip_2_3(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i)
 {
   const auto n = c->neighbor(i);
   const auto e = n->vertex(n->index(c));
-  plan = Flip_plan<Tr>();
-  plan.kind = FLIP_2_3;
+  plan.reset(FLIP_2_3);
   plan.add_old_cell(c);
   plan.add_old_cell(n);
   const auto t = tuple_of<Tr>(c);
@@ -129,8 +136,7 @@ void plan_flip_3_2(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i, int k
   for(int m = 0; m < 4; ++m)
     if(m != i && m != k) (a < 0 ? a : b) = m;
   const bool n_next = (Tr::next_around_edge(a, b) == i);
-  plan = Flip_plan<Tr>();
-  plan.kind = FLIP_3_2;
+  plan.reset(FLIP_3_2);
   plan.add_old_cell(c);
   plan.add_old_cell(n_next ? n : t);
   plan.add_old_cell(n_next ? t : n);
@@ -266,70 +272,132 @@ void glue_inner_facet(Cell_handle c, int i, Cell_handle d, int j, const Constrai
   constraints.set_facet_data(d, j, constraints.free_facet_data());
 }
 
+// An outer facet of a direct flip: the cell across, the data the old cell
+// had on it, and (when the cell across must point to another cell after the
+// flip) the facet's index there. The first new cell of each flip is its
+// first old cell with one vertex replaced, and the second reuses the second
+// old cell: the outer facets they keep, and the pointers to them, stay as
+// they are, so a flip touches the cells around it as CGAL's own flips do.
+template <class Tr, class Constraints>
+struct Direct_outer_facet
+{
+  typename Tr::Cell_handle cell;
+  int index = -1; // -1: the cell across keeps pointing to the same cell
+  typename Constraints::Facet_data data;
+
+  Direct_outer_facet() = default;
+  Direct_outer_facet(typename Tr::Cell_handle old, int i, bool relinked, const Constraints& constraints)
+      : cell(old->neighbor(i)), index(relinked ? cell->index(old) : -1), data(constraints.facet_data(old, i)) {}
+
+  void glue(typename Tr::Cell_handle c, int i, const Constraints& constraints) const
+  {
+    c->set_neighbor(i, cell);
+    if(index >= 0) cell->set_neighbor(index, c);
+    constraints.set_facet_data(c, i, data);
+  }
+};
+
 // A 2-3 plan (plan_flip_2_3) carried out: new cell m is c with its vertex
-// j[m] replaced by the apex; across its facet j[m] is the old outside of c,
+// j[m] replaced by the apex e; across its facet j[m] is the old outside of c,
 // across its facet i that of n (n's facet opposite c's vertex j[m]), and
-// across its facet j[m'] the new cell m'.
+// across its facet j[m'] the new cell m'. New cell 0 is c (one vertex set:
+// its facet j[0] stays), new cell 1 is n (n's facet opposite c's vertex
+// j[1] keeps its outside); each vertex ends pointing to the last new cell
+// that holds it, as with the flip by matching.
 template <class Tr, class Constraints>
 int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
                      const Constraints& constraints)
 {
+  typedef Direct_outer_facet<Tr, Constraints> Outer;
   const auto c = plan.old_cells[0], n = plan.old_cells[1];
   const int i = plan.facet_index;
+  const auto e = n->vertex(n->index(c));
   std::array<int, 3> j;
-  std::array<Outer_facet<Tr, Constraints>, 3> of_c, of_n;
   for(int k = 0, m = 0; k < 4; ++k)
-    if(k != i)
-    {
-      j[m] = k;
-      of_c[m] = Outer_facet<Tr, Constraints>(c, k, constraints);
-      of_n[m] = Outer_facet<Tr, Constraints>(n, n->index(c->vertex(k)), constraints);
-      ++m;
-    }
-  make_planned_cells(tr, plan, created, constraints);
+    if(k != i) j[m++] = k;
+  std::array<Outer, 3> of_c, of_n;
+  for(int m = 1; m < 3; ++m) of_c[m] = Outer(c, j[m], true, constraints);
+  for(int m = 0; m < 3; ++m) of_n[m] = Outer(n, n->index(c->vertex(j[m])), m != 1, constraints);
+  const auto cell_data = constraints.cell_data(c);
+
+  created[0] = c;
+  created[1] = n;
+  const auto& t1 = plan.new_cells[1];
+  n->set_vertices(t1[0], t1[1], t1[2], t1[3]);
+  c->set_vertex(j[0], e);
+  const auto& t2 = plan.new_cells[2];
+  created[2] = tr.tds().create_cell(t2[0], t2[1], t2[2], t2[3]);
   for(int m = 0; m < 3; ++m)
   {
-    of_c[m].glue(created[m], j[m], constraints);
+    if(m < 2) created[m]->tds_data().clear(); // a reused cell is a new cell: no mark
+    constraints.set_cell_data(created[m], cell_data);
+  }
+
+  for(int m = 0; m < 3; ++m)
+  {
+    if(m > 0) of_c[m].glue(created[m], j[m], constraints);
     of_n[m].glue(created[m], i, constraints);
     for(int l = m + 1; l < 3; ++l) glue_inner_facet(created[m], j[l], created[l], j[m], constraints);
   }
-  return finish_flip(tr, plan, created);
+  const auto d = t2[i];
+  for(const auto v : {t2[j[0]], t2[j[1]], d, e}) v->set_cell(created[2]);
+  c->vertex(j[2])->set_cell(created[1]);
+  return 3;
 }
 
 // A 3-2 plan (plan_flip_3_2) carried out: new cell 0 is c with b replaced by
-// the apex, new cell 1 c with a replaced; across the facet of each opposite
+// the apex e, new cell 1 c with a replaced; across the facet of each opposite
 // the apex is the old outside of c, across its facets i and k those of n and
 // t opposite the replaced vertex, and across the last the other new cell.
+// New cell 0 is c (one vertex set: its facet b stays), new cell 1 reuses
+// the second old cell, n or t, whose outer facet it keeps keeps its outside.
 template <class Tr, class Constraints>
 int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
                      const Constraints& constraints)
 {
-  const auto c = plan.old_cells[0];
+  typedef Direct_outer_facet<Tr, Constraints> Outer;
+  const auto c = plan.old_cells[0], second = plan.old_cells[1];
   const int i = plan.facet_index, k = plan.reflex_index;
   const auto n = c->neighbor(i), t = c->neighbor(k);
+  const auto e = n->vertex(n->index(c));
   int a = -1, b = -1;
   for(int m = 0; m < 4; ++m)
     if(m != i && m != k) (a < 0 ? a : b) = m;
-  typedef Outer_facet<Tr, Constraints> Outer;
   // r[0] = b is replaced in new cell 0, r[1] = a in new cell 1.
   const std::array<int, 2> r = {b, a};
   std::array<Outer, 2> of_c, of_n, of_t;
+  of_c[1] = Outer(c, a, true, constraints);
   for(int m = 0; m < 2; ++m)
   {
     const auto v = c->vertex(r[m]);
-    of_c[m] = Outer(c, r[m], constraints);
-    of_n[m] = Outer(n, n->index(v), constraints);
-    of_t[m] = Outer(t, t->index(v), constraints);
+    of_n[m] = Outer(n, n->index(v), m == 0 || second != n, constraints);
+    of_t[m] = Outer(t, t->index(v), m == 0 || second != t, constraints);
   }
-  make_planned_cells(tr, plan, created, constraints);
+  const auto cell_data = constraints.cell_data(c);
+  const auto va = c->vertex(a), vb = c->vertex(b), vd = c->vertex(i), vk = c->vertex(k);
+
+  created[0] = c;
+  created[1] = second;
+  const auto& t1 = plan.new_cells[1];
+  second->set_vertices(t1[0], t1[1], t1[2], t1[3]);
+  c->set_vertex(b, e);
   for(int m = 0; m < 2; ++m)
   {
-    of_c[m].glue(created[m], r[m], constraints);
+    created[m]->tds_data().clear(); // a reused cell is a new cell: no mark
+    constraints.set_cell_data(created[m], cell_data);
+  }
+
+  for(int m = 0; m < 2; ++m)
+  {
+    if(m > 0) of_c[m].glue(created[m], r[m], constraints);
     of_n[m].glue(created[m], i, constraints);
     of_t[m].glue(created[m], k, constraints);
   }
   glue_inner_facet(created[0], a, created[1], b, constraints);
-  return finish_flip(tr, plan, created);
+  for(const auto v : {vb, vd, vk, e}) v->set_cell(created[1]);
+  va->set_cell(created[0]);
+  tr.tds().delete_cell(plan.old_cells[2]);
+  return 2;
 }
 
 // Any valid plan carried out: each facet of a new cell glued to the outside

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The swap drivers: Algorithm 3 of the paper for any criterion (with, for
-// the Delaunay criterion, a repair that ends on the Delaunay triangulation)
-// and Algorithm 4, the helper strategy.
+// the Delaunay criterion, the repair of delaunay_repair.h, which ends on the
+// Delaunay triangulation) and Algorithm 4, the helper strategy.
 //
-// A driver is a schedule (a work queue, or the paper's cycles), a rule (what a
-// visit of a facet decides) and an ending (converged, stuck, limit reached).
+// A driver (internal/swap_driver.h) is a schedule (a work queue, or the
+// paper's cycles), a rule (internal/swap_rules.h: what a visit of a facet
+// decides) and an ending (converged, stuck, limit reached).
 
 #ifndef CGAL_EDGE_SWAPPING_3_SWAP_EDGES_H
 #define CGAL_EDGE_SWAPPING_3_SWAP_EDGES_H
@@ -12,156 +13,18 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Edge_swapping_3/Delaunay_criterion.h>
-#include <CGAL/Edge_swapping_3/Five_point_configuration.h>
-#include <CGAL/Edge_swapping_3/Flip_visitor.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/Swap_report.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
-#include <CGAL/Edge_swapping_3/internal/rebuild_delaunay.h>
+#include <CGAL/Edge_swapping_3/delaunay_repair.h>
 #include <CGAL/Edge_swapping_3/internal/facet_scan.h>
 #include <CGAL/Edge_swapping_3/internal/lawson_flips.h>
-#include <CGAL/Edge_swapping_3/internal/swap_driver.h>
+#include <CGAL/Edge_swapping_3/internal/swap_rules.h>
 #include <type_traits>
 
 namespace CGAL {
 namespace Edge_swapping_3 {
 namespace internal {
-
-/// The settings from `np`; `default_order` when it names no face order.
-template <class NamedParameters>
-Driver_settings driver_settings(const NamedParameters& np, Face_order default_order)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  Driver_settings s;
-  s.schedule = choose_parameter(get_parameter(np, internal_np::schedule), WORK_QUEUE);
-  s.face_order = choose_parameter(get_parameter(np, internal_np::face_order), default_order);
-  s.random_seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  s.max_rounds = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), std::size_t(1000));
-  s.record_non_delaunay_facets = choose_parameter(get_parameter(np, internal_np::record_non_delaunay_facets), false);
-  s.perturbation = choose_parameter(get_parameter(np, internal_np::perturbation), CGAL_PERTURBATION);
-  s.cycle_visitor = choose_parameter(get_parameter(np, internal_np::cycle_visitor),
-                                     std::function<void(const Cycle_record&)>());
-  s.reading = choose_parameter(get_parameter(np, internal_np::helper_reading), Helper_reading());
-  return s;
-}
-
-/// Algorithm 2 with a criterion: swap a swappable configuration the criterion prefers.
-template <class Criterion>
-struct Criterion_rule
-{
-  static constexpr Round_rule round_rule = PLAIN_RULE;
-  const Criterion& criterion;
-  Perturbation perturbation; // the tie-breaking of a Delaunay criterion's test
-
-  bool sees_facet_from_either_side() const
-  {
-    if constexpr(Is_delaunay_criterion<Criterion>::value) return perturbation == CGAL_PERTURBATION;
-    else return false;
-  }
-
-  template <class Driver, class Cell_handle>
-  void operator()(Driver& d, Cell_handle c, int i) const
-  {
-    constexpr bool delaunay = Is_delaunay_criterion<Criterion>::value;
-    auto& tr = d.triangulation();
-    // The exact in-sphere test is cheaper than the classification, and most
-    // facets pass it: for Delaunay, only a failing facet is classified, and
-    // the criterion is not asked again (the test under `perturbation` is it).
-    if constexpr(delaunay)
-      if(is_locally_delaunay(tr, c, i, perturbation)) return;
-    const auto conf = classify_facet(tr, c, i);
-    if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()) &&
-       (delaunay || criterion(tr, conf)))
-      d.flip(conf);
-    else
-      d.keep(conf, delaunay, false);
-  }
-};
-
-/// Algorithm 4: a non-Delaunay configuration tags its tetrahedra; a swappable
-/// configuration with a tagged tetrahedron is swapped, Delaunay or not.
-struct Helper_rule
-{
-  Helper_swap_condition condition = PASS_OVER_UNTAGGED_DELAUNAY_FACETS; // Helper_reading::swap_condition
-  static constexpr bool reads_only_cells_and_tags = true; // a fixed-order run that comes back to a state loops
-  static constexpr Round_rule round_rule = HELPER_RULE;
-
-  template <class Driver, class Cell_handle>
-  void operator()(Driver& d, Cell_handle c, int i) const
-  {
-    auto& tr = d.triangulation();
-    // A Delaunay facet between two untagged cells is skipped unclassified: a
-    // swappable configuration with a tagged cell is also reached through a
-    // facet of that cell, so no help is lost, only deferred.
-    const bool delaunay = is_locally_delaunay(tr, c, i, d.perturbation());
-    // (With a tag needed on the facet's cells, such a visit swaps nothing either.)
-    const bool pass_over = condition != TAG_ON_ANY_TETRAHEDRON;
-    if(pass_over && delaunay && !d.is_tagged(c) && !d.is_tagged(c->neighbor(i))) return;
-    const auto conf = classify_facet(tr, c, i);
-    if(!delaunay)
-      for(int k = 0; k < conf.number_of_tetrahedra(); ++k) d.tag(conf.tetrahedron(k));
-    if(conf.is_swappable() && flip_respects_constraints(tr, conf.flip_plan(), d.constraints()))
-    {
-      const auto& plan = conf.flip_plan();
-      bool tagged = false;
-      if(condition == TAG_ON_FACET_CELLS)
-        tagged = d.is_tagged(c) || d.is_tagged(c->neighbor(i));
-      else
-        for(int k = 0; k < plan.number_of_old_cells; ++k) tagged = tagged || d.is_tagged(plan.old_cells[k]);
-      if(tagged)
-      {
-        d.flip(conf); // the new cells are untagged (unless the reading remembers their vertices)
-        return;
-      }
-    }
-    // A non-Delaunay facet is visited again in the next round, as in a cycle.
-    d.keep(conf, !delaunay, !delaunay);
-  }
-};
-
-template <class Driver>
-void decide_delaunay_ending(Swap_report& report, Driver& driver, const Driver_settings& s)
-{
-  report.non_delaunay_facets =
-    (long long)((s.schedule == WORK_QUEUE) ? driver.number_of_non_delaunay_facets_left()
-                                           : number_of_non_delaunay_facets(driver.triangulation(), s.perturbation));
-  if(report.ending == CONVERGED && report.non_delaunay_facets > 0) report.ending = STUCK;
-}
-
-/// Calls `f(driver)` with the driver of `np`. The visitor is a copy, as in
-/// CGAL: a visitor keeps its state behind a pointer or std::ref.
-template <class Tr, class Constraints, class NamedParameters, class F>
-auto with_driver(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np, F f)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_flip_visitor());
-  auto visit_visitor = choose_parameter(get_parameter(np, internal_np::visit_visitor), No_visit_visitor());
-  Swap_driver<Tr, Constraints, decltype(visitor), decltype(visit_visitor)> driver(tr, s, constraints, visitor,
-                                                                                  visit_visitor);
-  return f(driver);
-}
-
-/// The helper; its first round visits `seeds` only when there are any.
-template <class Tr, class Constraints, class NamedParameters>
-Swap_report run_helper(Tr& tr, const Driver_settings& s, const Constraints& constraints, const NamedParameters& np,
-                       const std::vector<Facet_key<Tr>>& seeds = {}, std::vector<Facet_key<Tr>>* left = nullptr)
-{
-  static_assert(!Is_weighted_point<typename Tr::Point>::value,
-                "the helper strategy is for Delaunay triangulations of bare points");
-  return with_driver(tr, s, constraints, np, [&](auto& driver) {
-    if(s.schedule == WORK_QUEUE) driver.seed(seeds);
-    if(s.schedule == WORK_QUEUE && !s.reading.is_default())
-      throw std::invalid_argument("Edge_swapping_3: the readings of Algorithm 4 other than the package's run on the "
-                                  "paper's cycles (schedule PAPER_CYCLES)");
-    Helper_rule rule{s.reading.swap_condition};
-    Swap_report report = driver.run(rule);
-    decide_delaunay_ending(report, driver, s);
-    if(left && report.ending != CONVERGED && s.schedule == WORK_QUEUE) *left = driver.non_delaunay_facets_kept();
-    return report;
-  });
-}
 
 /// `swap_edges` with its domain constraints made.
 template <class Tr, class Criterion, class Constraints, class NamedParameters>
@@ -236,68 +99,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
     }
   if(!scanned) report = plain_flips(nullptr, 0, stuck);
   if constexpr(delaunay)
-  {
-    if(report.ending == CONVERGED || !repair)
-    {
-      report.seconds = total.time();
-      return report;
-    }
-
-    // Stuck (or out of rounds): the helper, then the rebuild.
-    report.stuck_after_plain_flips = report.non_delaunay_facets;
-    report.first_helper_round = report.cycles.size() + 1;
-    Driver_settings hs = driver_settings(np, RANDOM_ORDER);
-    const std::size_t helper_rounds =
-        choose_parameter(get_parameter(np, internal_np::helper_rounds_before_rebuild), std::size_t(100));
-    auto append = [&](const Swap_report& part) {
-      for(Cycle_record r : part.cycles)
-      {
-        r.cycle += report.cycles.size();
-        report.cycles.push_back(r);
-      }
-      report.ending = part.ending;
-      report.non_delaunay_facets = part.non_delaunay_facets;
-    };
-    // Without tags the helper does nothing on a Delaunay facet: its first
-    // round needs only the facets plain flips left. With the common flips,
-    // the helper runs two rounds (one tags, one swaps), then plain flips
-    // until they are stuck again (the helper's own plain swaps cost several
-    // times more), then the helper for twice as many rounds, and so on:
-    // plain flips can undo what a short helper run did (its tags are lost).
-    for(std::size_t burst = 2; report.helper_rounds < helper_rounds; burst *= 2)
-    {
-      hs.max_rounds = helper_rounds - report.helper_rounds;
-      if(lawson) hs.max_rounds = (std::min)(hs.max_rounds, burst);
-      std::vector<Facet_key<Tr>> left;
-      const Swap_report helper = run_helper(tr, hs, constraints, np, stuck, &left);
-      report.helper_rounds += helper.number_of_cycles();
-      report.repair_path = HELPER_FLIPS;
-      append(helper);
-      if(report.ending == CONVERGED || !lawson || helper.number_of_cycles() == 0) break;
-      Facets seeds;
-      for(const auto& key : left)
-      {
-        typename Tr::Cell_handle c;
-        int i;
-        if(find_facet(tr, key, typename Tr::Cell_handle(), c, i)) seeds.emplace_back(c, i);
-      }
-      stuck.clear();
-      const std::size_t n_seeds = seeds.size();
-      report.repair_path = PLAIN_FLIPS_AFTER_HELPER;
-      append(plain_flips(&seeds, n_seeds, stuck));
-      if(report.ending == CONVERGED) break;
-      ++hs.random_seed; // another order next time
-    }
-    // A domain mesh is never rebuilt: the rebuild knows no constraint.
-    if(report.ending != CONVERGED && std::is_same<Constraints, No_constraints>::value)
-    {
-      report.repair_path = REBUILT;
-      report.rebuilt_cells = rebuild_as_delaunay(tr);
-      // Flip insertion ends on Delaunay (Joe 1991); counted, not assumed.
-      report.non_delaunay_facets = (long long)number_of_non_delaunay_facets(tr, s.perturbation);
-      report.ending = report.non_delaunay_facets == 0 ? CONVERGED : STUCK;
-    }
-  }
+    if(report.ending != CONVERGED && repair) repair_to_delaunay(tr, report, stuck, plain_flips, lawson, s, constraints, np);
   report.seconds = total.time();
   return report;
 }

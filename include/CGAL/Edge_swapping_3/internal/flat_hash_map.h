@@ -2,8 +2,12 @@
 // A hash map with open addressing (linear probing, deletion by backward
 // shift) for the drivers' per-cell and per-facet state. Node-based maps
 // allocate on every insertion; a driver inserts and erases a few dozen keys
-// per flip, so their allocations dominated its time. Debian 12's Boost (1.74)
-// has no flat map, hence this one. Iteration order is never used for a decision.
+// per flip, so their allocations dominated its time. Boost's flat map
+// (unordered_flat_map, Boost 1.81) cannot be had beside Debian 12's CGAL:
+// libcgal-dev depends on libboost-dev (1.74), which libboost1.81-dev
+// conflicts with. `benchmark_library_choices` measures this map beside
+// std::unordered_map and Boost 1.74's unordered_map (benchmarks.md).
+// Iteration order is never used for a decision.
 // A byte per slot holds seven bits of the key's hash (0: empty), so that a
 // probe compares keys only on a match: at a load of 3/4 a search for an absent
 // key passes about eight slots, and each key compared was a cache miss.
