@@ -31,54 +31,9 @@ template <class Derived, class Base>
 class Paper_cycles : public Base
 {
 protected:
-  typedef typename Base::Triangulation Tr;
-  typedef typename Base::Cell_handle Cell_handle;
-  typedef typename Base::Vertex_handle Vertex_handle;
-  typedef typename Base::Key Key;
-  typedef typename Base::Edge Edge;
-  typedef typename Base::Configuration Configuration;
-  typedef typename Base::State State;
-  using Base::QUEUED;
-  using Base::KEPT;
-  using Base::REGISTERED;
-  using Base::TAGGED;
-  using Base::TOUCHED;
-  using Base::LISTED;
-  using Base::MOVED_IN;
-  using Base::tr_;
-  using Base::settings_;
-  using Base::round_rule_;
-  using Base::rng_;
-  using Base::record_;
-  using Base::queueing_;
-  using Base::index_;
-  using Base::state_;
-  using Base::any_tag_;
-  using Base::vertex_index_;
-  using Base::remembered_tags_;
-  using Base::current_cell_;
-  using Base::current_index_;
-  using Base::is_tagged;
-  using Base::is_old_cell;
-  using Base::is_current;
-  using Base::number_of_bits;
-  using Base::state_at;
-  using Base::state;
-  using Base::facet_slot;
-  using Base::cell_in_slot;
-  using Base::cell_vertices;
-  using Base::priority_of;
-  using Base::sort_by_priority;
-  using Base::number_of_finite_cells;
-  using Base::begin_cycle_tags;
-  using Base::cycle_ends_run;
-  using Base::vertex_slots;
-  using Base::tracing;
-  using Base::visit_facet;
-  using Base::end_round;
-  using Base::visit_visitor_;
-  using Base::skip_repeats_;
-  using Base::skip_repeated_cycles;
+  CGAL_EDGE_SWAPPING_3_DRIVER_STATE_NAMES
+  CGAL_EDGE_SWAPPING_3_DRIVER_VISITS_NAMES
+  CGAL_EDGE_SWAPPING_3_LOOP_DETECTION_NAMES
 
   Paper_cycles(Tr& tr, const Driver_settings& settings) : Base(tr, settings) {}
 

@@ -6,8 +6,8 @@
 //  - a work queue: the first round visits every interior facet, later rounds
 //    only the facets whose configuration or tags changed since their last
 //    visit, so a round costs what the flips before it changed.
-// Driver state (the helper's tags, the queue) is kept here, in arrays indexed
-// by the cells' slot numbers, never in the TDS marks that CGAL's own
+// Driver state (the helper's tags, the queue) is kept in arrays indexed by
+// the cells' slot numbers, never in the TDS marks that CGAL's own
 // traversals clear. Both name a facet by a cell slot and an index; the
 // paper's cycles follow a listed facet across the flips that replace its cell,
 // so that it is visited whenever a facet with its three vertices exists.
@@ -32,7 +32,7 @@ namespace Edge_swapping_3 {
 namespace internal {
 
 /// A swap driver: a schedule (the work queue, the paper's cycles or same-cycle
-/// sweeps, driver_settings.h), a rule the caller gives (what a visit of a
+/// sweeps, as `Driver_settings` says), a rule the caller gives (what a visit of a
 /// facet decides) and an ending. The rule calls `flip`, `keep`, `tag` and
 /// `is_tagged`; a flip tells each layer before and after (its hooks), the
 /// flip visitor sees the plan before and the new cells after.
