@@ -350,7 +350,7 @@ int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::
 // the apex is the old outside of c, across its facets i and k those of n and
 // t opposite the replaced vertex, and across the last the other new cell.
 // New cell 0 is c (one vertex set: its facet b stays), new cell 1 reuses
-// the second old cell, n or t, whose outer facet it keeps keeps its outside.
+// the second old cell, n or t, keeping the outside of its outer facet.
 template <class Tr, class Constraints>
 int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
                      const Constraints& constraints)

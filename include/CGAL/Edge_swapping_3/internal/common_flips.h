@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The two common flips of a facet that is not locally Delaunay, decided by
 // three exact orientation tests and made by the package's flip
-// (`execute_flip` of the plan `classify_facet` would make): the 2-3 flip when the apex e across the facet (c, i) lies strictly inside
-// the wedge of c at that facet, the 3-2 flip when it lies strictly beyond
+// (`execute_flip` of the plan `classify_facet` would make): the 2-3 flip
+// when the apex e across the facet (c, i) lies strictly inside the wedge of
+// c at that facet, the 3-2 flip when it lies strictly beyond
 // exactly one other facet of c and the edge between the two has three cells.
 // These are the signs of the barycentric coordinates of e in c (appendix A),
 // so the decision is classify_facet's in those two cases; a degenerate or
