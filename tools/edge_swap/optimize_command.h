@@ -356,7 +356,10 @@ inline int run_optimize(const Optimize_options& o)
   {
     std::cout << "delaunay repair: plain flips left " << report.stuck_after_plain_flips
               << " faces not locally Delaunay; helper " << report.helper_rounds << " rounds; ";
-    switch(report.repair_path)
+    if(report.ending != ES::CONVERGED)
+      std::cout << "not converged: " << report.non_delaunay_facets << " faces left not locally Delaunay"
+                << (report.repair_path == ES::REBUILT ? "" : " (a domain mesh is never rebuilt)");
+    else switch(report.repair_path)
     {
     case ES::HELPER_FLIPS: std::cout << "a helper round finished the work"; break;
     case ES::PLAIN_FLIPS_AFTER_HELPER: std::cout << "plain flips finished the work after the helper's rounds"; break;
