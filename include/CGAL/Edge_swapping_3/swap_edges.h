@@ -122,7 +122,7 @@ Swap_report swap_edges(Tr& tr, const Criterion& criterion, const Constraints& co
 /// the last one taken, when the ending is not `CONVERGED`), and each round's
 /// `Cycle_record::rule` says whether it was a round of plain flips or of the
 /// helper. Should the rebuild leave a facet not locally Delaunay (a defect:
-/// never observed), the ending is `STUCK` with that count; no other
+/// not seen in any test or benchmark), the ending is `STUCK` with that count; no other
 /// triangulator stands in. `delaunay_repair(false)` gives the paper's Algorithm 3 alone,
 /// whose ending is then `CONVERGED` or `STUCK`. A domain mesh is never
 /// rebuilt: its repair ends after the helper step.
