@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzzes the readers: builds one libFuzzer target per reader with clang
 # (AddressSanitizer and UndefinedBehaviorSanitizer) and runs each for
-# SECONDS (default 60), from the seed corpus in test/Edge_swapping_3/fuzz/corpus.
+# SECONDS (default 60), from the seed corpus in test/Edge_swapping_3/fuzz/corpus
+# (the package's readers) or laboratory/test/fuzz/corpus (the laboratory's).
 #
 #   bash scripts/fuzz.sh [SECONDS] [READER...]    readers: node ele medit msh vtu topcom case_json results streamed trace
 #
@@ -28,7 +29,9 @@ for r in "${readers[@]}"; do
   mkdir -p "build-fuzz/corpus/$r" "build-fuzz/findings/$r"
   log="build-fuzz/fuzz_$r.log"
   echo "fuzz_$r: ${seconds} s"
-  if ./build-fuzz/bin/fuzz_"$r" "build-fuzz/corpus/$r" "test/Edge_swapping_3/fuzz/corpus/$r" \
+  seeds=test/Edge_swapping_3/fuzz/corpus/$r
+  [ -d "$seeds" ] || seeds=laboratory/test/fuzz/corpus/$r
+  if ./build-fuzz/bin/fuzz_"$r" "build-fuzz/corpus/$r" "$seeds" \
        -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
        -artifact_prefix="build-fuzz/findings/$r/" -print_final_stats=1 > "$log" 2>&1; then
     result="no finding"

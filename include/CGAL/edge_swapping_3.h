@@ -2,9 +2,8 @@
 //
 // Edge_swapping_3: the 3-D edge-swapping method of Gandhi and Barth (1993) on
 // CGAL::Triangulation_3. The umbrella header: it brings in the whole public
-// API except the file readers and writers (CGAL/Edge_swapping_3/IO/) and the
-// conjecture laboratory (CGAL/Edge_swapping_3/Laboratory/, which needs
-// nlohmann-json: include its headers where you use it).
+// API except the file readers and writers (CGAL/Edge_swapping_3/IO/). The
+// conjecture laboratory is a project of its own (laboratory/ in the sources).
 //
 //   CGAL::swap_edges(tr, criterion, np)                 Algorithm 3, any criterion
 //   CGAL::swap_edges_with_helper(tr, np)                Algorithm 4, the helper strategy

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Runs the edge_swap program as a user would, in a scratch directory of its own.
+// Runs the program under test (EDGE_SWAP_BINARY: edge_swap, or the
+// laboratory's edge_swap_lab) as a user would, in a scratch directory of its own.
 
 #ifndef EDGE_SWAPPING_3_PROGRAM_RUNNER_H
 #define EDGE_SWAPPING_3_PROGRAM_RUNNER_H
@@ -53,8 +54,13 @@ public:
   /// Runs the program after the shell commands `prefix` (limits, traps).
   Run run_with(const std::string& prefix, const std::string& args) const
   {
-    const std::string cmd = "(" + prefix + " " + std::string(EDGE_SWAP_BINARY) + " " + args + ") > " + path("stdout") +
-                            " 2> " + path("stderr");
+    return run_program(prefix + " " + std::string(EDGE_SWAP_BINARY), args);
+  }
+
+  /// Runs `program` (a path, after shell commands if any) with `args`.
+  Run run_program(const std::string& program, const std::string& args) const
+  {
+    const std::string cmd = "(" + program + " " + args + ") > " + path("stdout") + " 2> " + path("stderr");
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
   }
@@ -76,13 +82,13 @@ private:
   fs::path dir_;
 };
 
-/// Runs `edge_swap args` and requires a clean rejection: exit 2, `what` in
+/// Runs the program with `args` and requires a clean rejection: exit 2, `what` in
 /// the message, and no file in the directory but `inputs`.
 inline void require_clean_rejection(const Workdir& w, const std::string& args, const std::string& what,
                                     const std::vector<std::string>& inputs)
 {
   const Run r = w.run(args);
-  INFO("edge_swap " << args << "\nstderr: " << r.err);
+  INFO(EDGE_SWAP_BINARY << " " << args << "\nstderr: " << r.err);
   REQUIRE(r.exit_code == 2);
   REQUIRE(r.err.find(what) != std::string::npos);
   REQUIRE(w.outputs(inputs) == 0);

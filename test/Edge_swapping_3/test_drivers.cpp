@@ -4,7 +4,8 @@
 // per-flip visitor, the uniform permutation, and the Delaunay repair.
 
 #include "test_common.h"
-#include <CGAL/Edge_swapping_3/IO/conjecture_json.h>
+#include <CGAL/Edge_swapping_3/IO/tetgen.h>
+#include <nlohmann/json.hpp>
 #include "program_runner.h"
 #include <sstream>
 #include <map>
@@ -23,6 +24,15 @@ typedef std::array<Vertex_handle, 4> Tet;
 struct No_op_flip_visitor : ES::Default_flip_visitor
 {
 };
+
+// The points of a .node file of the fixtures, in file order.
+std::vector<Point> fixture_points(const std::string& name)
+{
+  const auto node = ES::IO::read_node_file(std::string(EDGE_SWAPPING_3_FIXTURES) + "/" + name);
+  std::vector<Point> points;
+  for(const auto& p : node.points) points.emplace_back(p[0], p[1], p[2]);
+  return points;
+}
 
 // A facet by its points, in order.
 std::array<Point, 3> facet_points(Cell_handle c, int i)
@@ -106,9 +116,7 @@ struct Start
 
 std::vector<Start> replay_starts()
 {
-  const auto cospherical = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) +
-                                              "/helper_random_order_long_runs_cospherical_199_points.json");
-  std::vector<Point> points(cospherical.points.begin(), cospherical.points.end());
+  const std::vector<Point> points = fixture_points("cospherical_199_points.node");
   return {{"199 cospherical points, seed 371", points, ES::RANDOM_ORDER, 371},
           {"199 cospherical points, storage order", points, ES::STORAGE_ORDER, 0},
           {"500 random points, seed 3", random_in_cube(500, 3), ES::RANDOM_ORDER, 3},
@@ -510,16 +518,16 @@ TEST_CASE("The per-flip visitor sees every flip, old cells before and new cells 
 
 TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or the rebuild, end on CGAL's", "[drivers]")
 {
-  const auto c = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
-  REQUIRE(c.start == ES::PLACING_START);
-  auto start = [&](Tr& tr) { ES::insert_by_placing(tr, c.points, ES::parameters::insertion_order(ES::INPUT_ORDER)); };
+  // Joe's 9 points: plain flips from this placing start, in the paper's cycles, random order, seed 6012, are stuck.
+  const std::vector<Point> points = fixture_points("joe_9_points.node");
+  auto start = [&](Tr& tr) { ES::insert_by_placing(tr, points, ES::parameters::insertion_order(ES::INPUT_ORDER)); };
 
   SECTION("the paper's Algorithm 3 alone is stuck")
   {
     Tr tr;
     start(tr);
     const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
-                                    np::delaunay_repair(false, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed)))));
+                                    np::delaunay_repair(false, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(6012)))));
     REQUIRE(r.ending == ES::STUCK);
     REQUIRE(r.repair_path == ES::PLAIN_FLIPS);
   }
@@ -527,7 +535,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
   {
     Tr tr;
     start(tr);
-    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed))));
+    const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(), np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(6012))));
     REQUIRE(r.ending == ES::CONVERGED);
     REQUIRE(r.repair_path == ES::HELPER_FLIPS);
     REQUIRE(r.stuck_after_plain_flips > 0);
@@ -547,7 +555,7 @@ TEST_CASE("Delaunay repair: from a stuck start, plain flips then the helper, or 
     std::set<const void*> vertices; // the vertices themselves (and so their data) stay
     for(auto v : tr.finite_vertex_handles()) vertices.insert(&*v);
     const auto r = CGAL::swap_edges(tr, ES::Delaunay_criterion(),
-                                    np::helper_rounds_before_rebuild(0, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(c.seed)))));
+                                    np::helper_rounds_before_rebuild(0, np::schedule(ES::PAPER_CYCLES, np::face_order(ES::RANDOM_ORDER, CGAL::parameters::random_seed(6012)))));
     REQUIRE(r.ending == ES::CONVERGED);
     REQUIRE(r.repair_path == ES::REBUILT);
     REQUIRE(r.non_delaunay_facets == 0);
@@ -786,14 +794,8 @@ TEST_CASE("A visitor with state of its own is passed through std::ref", "[driver
 TEST_CASE("edge_swap optimize: the Delaunay repair is reported, --paper turns it off, bad schedules are refused", "[drivers][program]")
 {
   // Joe's 9 points: plain flips in the paper's cycles, random order, seed 6012, are stuck.
-  const auto c = ES::IO::read_conjecture_case_file<Point>(std::string(EDGE_SWAPPING_3_FIXTURES) + "/plain_stuck_9_points.json");
-  std::ostringstream node;
-  node.precision(17);
-  node << c.points.size() << " 3 0 0\n";
-  for(std::size_t k = 0; k < c.points.size(); ++k)
-    node << k << ' ' << c.points[k].x() << ' ' << c.points[k].y() << ' ' << c.points[k].z() << '\n';
   Workdir w;
-  w.write("joe.node", node.str());
+  w.write("joe.node", Workdir::slurp(std::string(EDGE_SWAPPING_3_FIXTURES) + "/joe_9_points.node"));
   const std::string common = w.path("joe.node") + " --start placing:input --schedule cycles --order random --seed 6012 ";
 
   const Run repaired = w.run("optimize " + common + "-o " + w.path("r.ele") + " --stats " + w.path("r.json"));

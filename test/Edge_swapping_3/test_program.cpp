@@ -291,6 +291,28 @@ void write_random_node(const Workdir& w, const std::string& name, std::size_t n,
 }
 } // namespace
 
+TEST_CASE("optimize --reading: readings the program cannot run as asked are refused before any work, the others run",
+          "[program]")
+{
+  Workdir w;
+  write_random_node(w, "p.node", 60, 7);
+  const std::string base = "optimize " + w.path("p.node") + " -o " + w.path("x.ele") + " ";
+  for(const auto& [args, what] : std::vector<std::pair<std::string, std::string>>{
+          {"--reading never-cleared,pass-over,no-swap", "--reading sets the helper strategy's reading"},
+          {"--helper --schedule cycles --reading never-cleared,pass-over", "is not a reading"},
+          {"--helper --schedule cycles --reading until-destroyed,pass-over,no-swap,later", "is not a reading"},
+          {"--helper --reading never-cleared,pass-over,no-swap", "runs on the paper's cycles: add --schedule cycles"},
+          {"--helper --schedule cycles --order storage --reading until-destroyed,facet-cells,no-swap,same-cycle",
+           "needs --order priority or random"},
+          {"--helper --order fixed", "--order is storage, random or priority"},
+          {"--criterion aspect-ratio --order priority", "--order and --schedule set the paper's flip driver"}})
+    require_clean_rejection(w, base + args, what, {"p.node"});
+  // The package's reading is the work queue's: no --schedule cycles needed. Without --order
+  // the helper's order is random, which same-cycle takes.
+  REQUIRE(w.run(base + "--helper --order priority --seed 3 --reading until-destroyed,pass-over,no-swap-no-tag").exit_code == 0);
+  REQUIRE(w.run(base + "--helper --schedule cycles --reading until-destroyed,facet-cells,no-swap,same-cycle").exit_code == 0);
+}
+
 TEST_CASE("The program gives the same output with and without huge pages", "[program]")
 {
   // edge_swap starts itself again with glibc.malloc.hugetlb=1 added to

@@ -5,9 +5,7 @@
 
 #include "check_command.h"
 #include "demo_command.h"
-#include "experiment_command.h"
 #include "huge_pages.h"
-#include "shrink_command.h"
 #include "mesh_domain_command.h"
 #include "optimize_command.h"
 #include "refine_commands.h"
@@ -56,7 +54,7 @@ int main(int argc, char** argv)
   optimize->add_option("--order", opt.order, "face order: storage, random (drawn anew each cycle) or priority (a "
                        "fixed order of vertex triples drawn from --seed); default storage, random with --helper");
   optimize->add_option("--reading", opt.reading, "with --helper: its reading of Algorithm 4, e.g. "
-                       "never-cleared,facet-cells,no-swap (doc/Edge_swapping_3/traces.md); other than the default "
+                       "never-cleared,facet-cells,no-swap (laboratory/doc/traces.md); other than the default "
                        "with --schedule cycles");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
   optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none")
@@ -73,8 +71,6 @@ int main(int argc, char** argv)
       ->check(CLI::IsMember({"keep", "free"}));
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
-  optimize->add_option("--trace", opt.trace, "JSON lines: every visit and the state after every round, for the "
-                                             "independent checker (Delaunay: --helper, or plain with --paper)");
 
   std::string check_path;
   auto* check = app.add_subcommand("check", "validity and Delaunay checks of a mesh");
@@ -112,49 +108,6 @@ int main(int argc, char** argv)
   mesh_domain->add_option("-o,--output", domain_output, "output .mesh, .msh, .vtu or .ele")->required();
   mesh_domain->add_option("--size", domain_size, "target edge and cell size (default 0.35: about 5,000 vertices)");
 
-  Experiment_options exp;
-  auto* experiment = app.add_subcommand("experiment", "the conjecture laboratory: many instances, one JSON line each, a summary");
-  experiment->add_option("-o,--output", exp.output, "JSON lines, appended to: a stopped run resumes")->required();
-  experiment->add_option("--families", exp.families, "point families, comma separated: random-cube, random-ball, sphere, "
-                         "grid, cospherical, planes, clusters, jittered-grid, nearly-flat, random-integer, cube-corners, "
-                         "cube-centre, octahedron, octahedron-centre, cube-face-centres, grid-2x2x3, grid-3x3x2, "
-                         "two-spheres")->delimiter(',');
-  experiment->add_option("--points-file", exp.point_files, "TetGen .node point sets of your own (more families)")->delimiter(',');
-  experiment->add_option("--sizes", exp.sizes, "numbers of points, comma separated")->delimiter(',');
-  experiment->add_option("--seeds", exp.seeds, "seeds: N or A-B (each one a point set and a face-order stream)");
-  experiment->add_option("--starts", exp.starts, "placing (random order), scramble:K (Delaunay and K random flips), topcom (every fine triangulation)")->delimiter(',');
-  experiment->add_option("--strategies", exp.strategies, "plain, helper, insertion")->delimiter(',');
-  experiment->add_option("--orders", exp.orders, "face orders: storage, random, priority")->delimiter(',');
-  experiment->add_option("--readings", exp.readings, "the helper's readings of Algorithm 4, separated by ';' "
-                         "(doc/Edge_swapping_3/traces.md), or all (36)");
-  experiment->add_option("--max-cycles", exp.max_cycles, "cycle limit of each run")->check(CLI::PositiveNumber);
-  experiment->add_option("--threads", exp.threads, "threads (default: all cores)");
-  experiment->add_option("--shard", exp.shard, "I/N: run only the instances numbered I modulo N");
-  experiment->add_option("--cases", exp.cases_dir, "folder for the failing cases and the small stuck ones (to shrink)");
-  experiment->add_option("--stuck-case-max-points", exp.stuck_case_max_points, "save stuck plain runs up to this size");
-  auto* topcom_limit = experiment->add_option("--topcom-limit", exp.topcom_limit,
-                                              "at most this many TOPCOM triangulations per point set (default 100000; "
-                                              "none with --stream)")->check(CLI::PositiveNumber);
-  experiment->add_flag("--stream", exp.stream, "stream TOPCOM's triangulations in batches: one tally line per batch, "
-                                               "a line only for runs not ending on CGAL's triangulation");
-  experiment->add_option("--order-seeds", exp.order_seeds, "per-set (default: every TOPCOM start of a point set runs its "
-                         "seed's face orders) or per-start (each start its own seed: independent samples)");
-  experiment->add_option("--stream-batch", exp.stream_batch, "with --stream: triangulations per batch (default 4096)");
-
-  Shrink_options shr;
-  auto* shrink = app.add_subcommand("shrink", "remove points from a saved case while it still fails");
-  shrink->add_option("CASE", shr.input, "a case file written by experiment --cases")->required();
-  shrink->add_option("-o,--output", shr.output, "the smaller case (JSON)")->required();
-  shrink->add_option("--expect", shr.expect, "stuck (plain) or failure (not CGAL's Delaunay triangulation)");
-
-  std::string replay_path;
-  std::size_t replay_cycles = 0;
-  auto* replay = app.add_subcommand("replay", "run a saved case again and print its outcome");
-  replay->add_option("CASE", replay_path, "a case file written by experiment --cases or shrink")->required();
-  replay->add_option("--max-cycles", replay_cycles, "another cycle limit");
-  std::string replay_trace;
-  replay->add_option("--trace", replay_trace,
-                     "write every visit and the state after every cycle here (JSON lines; doc/Edge_swapping_3/traces.md)");
 
   std::size_t demo_points = 8000;
   unsigned int demo_seed = 1;
@@ -205,13 +158,6 @@ int main(int argc, char** argv)
     if(*refine) return run_refine(ref);
     if(*stats) return run_stats(stats_path, stats_json);
     if(*mesh_domain) return run_mesh_domain(domain_name, domain_output, domain_size);
-    if(*experiment)
-    {
-      exp.topcom_limit_given = topcom_limit->count() > 0;
-      return run_experiment(exp);
-    }
-    if(*shrink) return run_shrink(shr);
-    if(*replay) return run_replay(replay_path, replay_cycles, replay_trace);
     return run_demo(demo_points, demo_seed);
   }
   catch(const std::exception& e)

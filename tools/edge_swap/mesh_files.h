@@ -6,14 +6,17 @@
 #ifndef EDGE_SWAP_MESH_FILES_H
 #define EDGE_SWAP_MESH_FILES_H
 
-#include "output_files.h"
 #include "types.h"
+#include <CGAL/Edge_swapping_3/IO/output_files.h>
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include <CGAL/Edge_swapping_3/point_set_checks.h>
 #include <string>
 #include <vector>
 
 namespace edge_swap {
+
+using IO::check_output_paths;
+using IO::Output_files;
 
 /// Reads the input file `path` (and the .node beside an .ele).
 inline Input read_input(const std::string& path)

@@ -9,8 +9,6 @@
 #include <CGAL/edge_swapping_3.h>
 #include <CGAL/Edge_swapping_3/mesh_statistics.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
-#include <CGAL/Edge_swapping_3/Laboratory/Conjecture_case.h>
-#include <CGAL/Edge_swapping_3/Laboratory/Visit_trace.h>
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
@@ -23,7 +21,7 @@ namespace edge_swap {
 struct Optimize_options
 {
   std::string input, output, criterion = "delaunay", start = "placing", order;
-  std::string perturb = "cgal", history, stats, schedule = "queue", trace;
+  std::string perturb = "cgal", history, stats, schedule = "queue";
   std::string reading; ///< the helper's reading of Algorithm 4 (empty: the package's)
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   std::string angle_range = "keep"; ///< the worst-first driver's dihedral angles: keep or free
@@ -179,18 +177,7 @@ inline int run_optimize(const Optimize_options& o)
   std::vector<std::string> outputs = mesh_output_paths(o.output);
   outputs.push_back(o.history);
   outputs.push_back(o.stats);
-  outputs.push_back(o.trace);
   check_output_paths(outputs);
-  if(!o.trace.empty())
-  {
-    // The trace checker replays plain swapping or the helper, without constraints, under CGAL's perturbation.
-    if(o.criterion != "delaunay" || !(o.helper || o.paper))
-      throw Usage_error("--trace records one driver of the Delaunay criterion: plain swapping with --paper, or --helper");
-    if(o.perturb != "cgal") throw Usage_error("--trace needs --perturb cgal (the checker's tie-breaking)");
-    const std::string ext = std::filesystem::path(o.input).extension().string();
-    if(ext != ".node" && ext != ".ele")
-      throw Usage_error("--trace needs a .node or .ele input (a mesh with boundaries and subdomains is not traced)");
-  }
   if(o.helper && o.criterion != "delaunay")
     throw Usage_error("--helper is the helper strategy of the Delaunay criterion; it cannot go with --criterion " + o.criterion);
   if(o.perturb != "cgal" && o.perturb != "none") throw Usage_error("--perturb is cgal or none");
@@ -207,7 +194,7 @@ inline int run_optimize(const Optimize_options& o)
     if(!ES::helper_reading_from_name(o.reading, reading))
       throw Usage_error("--reading '" + o.reading + "' is not a reading: LIFETIME,CONDITION,ENDING[,same-cycle] with "
                         "LIFETIME until-destroyed, cleared-each-cycle or never-cleared, CONDITION pass-over, "
-                        "any-tetrahedron or facet-cells, ENDING no-swap-no-tag or no-swap (doc/Edge_swapping_3/traces.md)");
+                        "any-tetrahedron or facet-cells, ENDING no-swap-no-tag or no-swap (laboratory/doc/traces.md)");
     if(!reading.is_default() && o.schedule != "cycles")
       throw Usage_error("--reading " + o.reading + " runs on the paper's cycles: add --schedule cycles (the work "
                         "queue runs the package's reading, until-destroyed,pass-over,no-swap-no-tag)");
@@ -289,28 +276,12 @@ inline int run_optimize(const Optimize_options& o)
       });
     });
   };
-  ES::Swap_report report;
-  std::ostringstream trace; // written with the other outputs, all or nothing
-  if(!o.trace.empty())
-  {
-    ES::Visit_trace_writer<Point> writer(trace, in.points);
-    writer.start(tr, {{"strategy", o.helper ? "helper" : "plain"},
-                      {"schedule", o.schedule == "queue" ? "queue" : "cycles"},
-                      {"order", ES::face_order_name(face_order)},
-                      {"seed", o.seed},
-                      {"reading", ES::helper_reading_name(reading)},
-                      {"max_rounds", o.max_cycles}});
-    report = run(np::visit_visitor(std::ref(writer), parameters));
-    writer.finish(ES::swap_ending_name(report.ending), report.number_of_cycles());
-  }
-  else
-    report = run(parameters);
+  const ES::Swap_report report = run(parameters);
   const ES::Mesh_statistics after = with_statistics ? domain_statistics(tr, in) : ES::Mesh_statistics();
   const bool repairs = !o.helper && !o.paper && o.criterion == "delaunay";
 
   Output_files files;
   add_mesh_files(files, o.output, tr, in);
-  if(!o.trace.empty()) files.add(o.trace, [&trace](std::ostream& out) { out << trace.str(); });
   if(!o.history.empty())
     files.add(o.history, [&report](std::ostream& out) {
       out << "cycle,swaps_2_3,swaps_3_2,swaps_2_2,swaps_4_4,cells,non_delaunay_faces,visits,new_tags,rule\n";

@@ -2,7 +2,7 @@
 // The readings of Algorithm 4 (the helper strategy) where the paper leaves a
 // choice open, as options of the paper's cycles: how long a tag lasts, which
 // visits may make a helper swap, and when the cycles end. The default is the
-// package's reading; doc/Edge_swapping_3/traces.md quotes the sentence of the
+// package's reading; laboratory/doc/traces.md quotes the sentence of the
 // paper each option interprets.
 
 #ifndef CGAL_EDGE_SWAPPING_3_HELPER_READING_H

@@ -8,6 +8,7 @@
 #include <CGAL/Edge_swapping_3/Flip_plan.h>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -36,6 +37,27 @@ enum Face_order
   /// state at a round's end repeats itself from there.
   PRIORITY_ORDER
 };
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// "storage", "random" or "priority", as files and options name the orders.
+inline const char* face_order_name(Face_order o)
+{
+  static const char* names[] = {"storage", "random", "priority"};
+  return names[o];
+}
+
+/// \ingroup PkgEdgeSwapping3Reports
+/// The face order named `name` ("storage", "random", "priority") in `o`; false for another name.
+inline bool face_order_from_name(const std::string& name, Face_order& o)
+{
+  for(Face_order k : {STORAGE_ORDER, RANDOM_ORDER, PRIORITY_ORDER})
+    if(name == face_order_name(k))
+    {
+      o = k;
+      return true;
+    }
+  return false;
+}
 
 /// The rule a round applied at each facet it visited.
 enum Round_rule

@@ -248,7 +248,7 @@ Edge_swapping_3::Swap_report swap_edges(Tr& tr, const Criterion& criterion,
 /// \param tr the triangulation, of dimension 3; changed in place
 /// \param np the named parameters of `swap_edges()` but `delaunay_repair` and
 ///   `helper_rounds_before_rebuild`; `face_order` defaults to `RANDOM_ORDER`
-///   (in storage order the helper can loop: doc/Edge_swapping_3/findings.md)
+///   (in storage order the helper can loop: laboratory/doc/findings.md)
 /// \pre `tr.dimension() == 3` and `tr.is_valid()`
 /// \return the report, as for `swap_edges()`
 template <class Tr, class NamedParameters = parameters::Default_named_parameters>

@@ -16,7 +16,7 @@ struct Outcome
   std::string message; ///< the error, when rejected
 };
 
-enum class Reader { node, ele, medit, msh, vtu, topcom, case_json, results, streamed, trace };
+enum class Reader { node, ele, medit, msh, vtu };
 
 inline const char* reader_name(Reader r)
 {
@@ -26,12 +26,7 @@ inline const char* reader_name(Reader r)
   case Reader::ele: return "ele";
   case Reader::medit: return "medit";
   case Reader::msh: return "msh";
-  case Reader::vtu: return "vtu";
-  case Reader::topcom: return "topcom";
-  case Reader::case_json: return "case_json";
-  case Reader::streamed: return "streamed";
-  case Reader::trace: return "trace";
-  default: return "results";
+  default: return "vtu";
   }
 }
 
@@ -44,12 +39,7 @@ inline std::string file_name(Reader r)
   case Reader::ele: return "fuzz.ele";
   case Reader::medit: return "fuzz.mesh";
   case Reader::msh: return "fuzz.msh";
-  case Reader::vtu: return "fuzz.vtu";
-  case Reader::topcom: return "TOPCOM output";
-  case Reader::case_json: return "fuzz.json";
-  case Reader::streamed: return "fuzz.stream.jsonl";
-  case Reader::trace: return "fuzz.trace.jsonl";
-  default: return "fuzz.jsonl";
+  default: return "fuzz.vtu";
   }
 }
 

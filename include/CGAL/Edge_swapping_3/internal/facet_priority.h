@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The fixed face order PRIORITY_ORDER: a priority for each facet computed
 // from its three points and a seed alone, so that an independent program can
-// compute the same order (the definition is in doc/Edge_swapping_3/traces.md).
+// compute the same order (the definition is in laboratory/doc/traces.md).
 
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_FACET_PRIORITY_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_FACET_PRIORITY_H
