@@ -2,9 +2,12 @@
 // Benchmark (not a test): the places where the package keeps code of its own
 // beside a library that does the same, each measured against that library in
 // one run:
-//   flips  the package's 2-3 and 3-2 flips (execute_flip: glued directly, and
-//          by matching facets, the path of every other plan) against CGAL's
-//          Triangulation_data_structure_3::flip_flippable, on the same facets;
+//   flips  the package's 2-3 and 3-2 flips (of a facet, as the Lawson pass and
+//          flip insertion make them; execute_flip of a plan: glued directly,
+//          and by matching facets, the path of every other plan) against CGAL's
+//          Triangulation_data_structure_3::flip_flippable, on the same facets,
+//          planned in the timed loop, and (as in the drivers, whose criterion
+//          decides on the plan) with the plans made beforehand;
 //   index  the slot number of a cell: internal::Compact_container_index
 //          against CGAL's Compact_container::index;
 //   map    the drivers' hash map (internal::Flat_hash_map) against
@@ -51,7 +54,51 @@ std::vector<std::pair<Cell_handle, int>> disjoint_2_3_facets(Tr& tr)
   return facets;
 }
 
-enum Flipper { DIRECT, MATCHING, CGAL_TDS };
+enum Flipper { DIRECT, MATCHING, CGAL_TDS, COMMON };
+
+// Every facet flipped 2-3, then every new edge flipped back 3-2; the seconds
+// of the flips alone, the plans made before each phase's timer (ours) or the
+// flips found by CGAL's flip itself.
+double flip_phases(Tr& tr, const std::vector<std::pair<Cell_handle, int>>& facets, bool cgal)
+{
+  typedef Tr::Vertex_handle Vertex_handle;
+  std::vector<std::pair<Vertex_handle, Vertex_handle>> edges;
+  for(const auto& [c, i] : facets) edges.emplace_back(c->vertex(i), c->neighbor(i)->vertex(c->neighbor(i)->index(c)));
+  std::vector<ES::Flip_plan<Tr>> plans(facets.size());
+  std::array<Cell_handle, 4> made;
+  std::vector<Cell_handle> around(facets.size());
+  CGAL::Real_timer timer;
+  if(cgal)
+  {
+    timer.start();
+    for(const auto& [c, i] : facets) tr.tds().flip_flippable(c, i); // c holds the new edge (d, e)
+    for(std::size_t k = 0; k < facets.size(); ++k)
+    {
+      const Cell_handle c = facets[k].first;
+      tr.tds().flip_flippable(c, c->index(edges[k].first), c->index(edges[k].second));
+    }
+    return timer.time();
+  }
+  for(std::size_t k = 0; k < facets.size(); ++k) ES::internal::plan_flip_2_3(plans[k], facets[k].first, facets[k].second);
+  timer.start();
+  for(std::size_t k = 0; k < facets.size(); ++k)
+  {
+    ES::execute_flip(tr, plans[k], made);
+    around[k] = made[0];
+  }
+  timer.stop();
+  for(std::size_t k = 0; k < facets.size(); ++k)
+  {
+    const Cell_handle m = around[k];
+    int inner[2], n_inner = 0;
+    for(int l = 0; l < 4; ++l)
+      if(m->vertex(l) != edges[k].first && m->vertex(l) != edges[k].second) inner[n_inner++] = l;
+    ES::internal::plan_flip_3_2(plans[k], m, inner[0], inner[1]);
+  }
+  timer.start();
+  for(std::size_t k = 0; k < facets.size(); ++k) ES::execute_flip(tr, plans[k], made);
+  return timer.time();
+}
 
 // Each facet flipped 2-3 and straight back 3-2 (around the new edge); the
 // seconds of the flips alone (the facets are found before).
@@ -69,6 +116,17 @@ double flip_pairs(Tr& tr, const std::vector<std::pair<Cell_handle, int>>& facets
     {
       tr.tds().flip_flippable(c, i); // c holds the new edge (d, e)
       tr.tds().flip_flippable(c, c->index(d), c->index(e));
+      continue;
+    }
+    if(how == COMMON)
+    {
+      // The flip of the Lawson pass and of flip insertion: no plan made.
+      ES::internal::make_common_flip(tr, c, i, {ES::internal::COMMON_FLIP_2_3}, made);
+      const Cell_handle m = made[0];
+      int inner[2], n_inner = 0;
+      for(int k = 0; k < 4; ++k)
+        if(m->vertex(k) != d && m->vertex(k) != e) inner[n_inner++] = k;
+      ES::internal::make_common_flip(tr, m, inner[0], {ES::internal::COMMON_FLIP_3_2, inner[1]}, made);
       continue;
     }
     ES::internal::plan_flip_2_3(plan, c, i);
@@ -195,7 +253,7 @@ int main(int argc, char** argv)
                 pairs, n);
     std::printf("  %-34s %9s %12s %6s\n", "flip", "s", "ns a flip", "valid");
     double cgal_s = 0;
-    for(Flipper how : {CGAL_TDS, DIRECT, MATCHING})
+    for(Flipper how : {CGAL_TDS, COMMON, DIRECT, MATCHING})
     {
       const Measure m = in_child([&](double* out) {
         Tr tr = start;
@@ -204,11 +262,26 @@ int main(int argc, char** argv)
         out[1] = tr.is_valid() ? 1 : 0;
       });
       const char* name = how == CGAL_TDS ? "CGAL flip_flippable"
+                         : how == COMMON ? "ours, direct, of a facet (no plan)"
                          : how == DIRECT ? "ours, execute_flip glued directly"
                                          : "ours, execute_flip by matching";
       if(how == CGAL_TDS) cgal_s = m.values[0];
       std::printf("  %-34s %9.3f %12.1f %6s   ratio to CGAL %.2f\n", name, m.values[0], 1e9 * m.values[0] / (2.0 * pairs),
                   m.values[1] == 1 ? "yes" : "NO", m.values[0] / cgal_s);
+    }
+    std::printf("  all 2-3 flips, then all 3-2 flips back; our plans made before each phase's timer:\n");
+    for(bool cgal : {true, false})
+    {
+      const Measure m = in_child([&](double* out) {
+        Tr tr = start;
+        const auto facets = disjoint_2_3_facets(tr);
+        out[0] = flip_phases(tr, facets, cgal);
+        out[1] = tr.is_valid() ? 1 : 0;
+      });
+      if(cgal) cgal_s = m.values[0];
+      std::printf("  %-34s %9.3f %12.1f %6s   ratio to CGAL %.2f\n",
+                  cgal ? "CGAL flip_flippable" : "ours, execute_flip of a plan", m.values[0],
+                  1e9 * m.values[0] / (2.0 * pairs), m.values[1] == 1 ? "yes" : "NO", m.values[0] / cgal_s);
     }
   }
 

@@ -9,8 +9,8 @@
 // SOURCE is a case file (its points and start are used), a TetGen .node file
 // (its points, in the file's order, with a placing start), or FAMILY:N:SET for
 // the laboratory's point family FAMILY with N points drawn from SET and a
-// placing start. Runs are spread over THREADS threads (default 2); the lines
-// come in seed order. laboratory/doc/conjectures.md plots them
+// placing start. Runs are spread over THREADS of TBB's threads (default 2);
+// the lines come in seed order. laboratory/doc/conjectures.md plots them
 // (plot_escape_times.py). With SAVE_DIR, each run not ended by MAX_CYCLES is
 // run again and its last triangulation saved there as a case file
 // (unended_seed_S.json, start "cells"): a trapped state others can start from.
@@ -27,7 +27,10 @@
 #include <map>
 #include <mutex>
 #include <string>
-#include <thread>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -138,8 +141,12 @@ int main(int argc, char** argv)
       for(; printed <= last && !lines[printed - first].empty(); ++printed) std::cout << lines[printed - first] << std::endl;
     }
   };
-  std::vector<std::thread> pool;
-  for(unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
-  for(auto& t : pool) t.join();
+  // TBB's threads, as the package's runner uses (CGAL_LINKED_WITH_TBB); without TBB, this one.
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena arena{int(threads)};
+  arena.execute([&]() { tbb::parallel_for(0u, threads, [&](unsigned) { work(); }); });
+#else
+  work();
+#endif
   return 0;
 }

@@ -117,7 +117,11 @@ void plan_flip_2_3(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i)
   plan.add_old_cell(n);
   const auto t = tuple_of<Tr>(c);
   for(int k = 0; k < 4; ++k)
-    if(k != i) plan.add_new_cell(replaced(t, c->vertex(k), e));
+    if(k != i)
+    {
+      plan.add_new_cell(t);
+      plan.new_cells[plan.number_of_new_cells - 1][k] = e; // c with its vertex k replaced by the apex
+    }
   plan.facet_index = i;
 }
 
@@ -141,8 +145,10 @@ void plan_flip_3_2(Flip_plan<Tr>& plan, typename Tr::Cell_handle c, int i, int k
   plan.add_old_cell(n_next ? n : t);
   plan.add_old_cell(n_next ? t : n);
   const auto tc = tuple_of<Tr>(c);
-  plan.add_new_cell(replaced(tc, c->vertex(b), e));
-  plan.add_new_cell(replaced(tc, c->vertex(a), e));
+  plan.add_new_cell(tc);
+  plan.new_cells[0][b] = e; // c with b replaced by the apex
+  plan.add_new_cell(tc);
+  plan.new_cells[1][a] = e; // c with a replaced by the apex
   plan.facet_index = i;
   plan.reflex_index = k;
 }
@@ -297,20 +303,20 @@ struct Direct_outer_facet
   }
 };
 
-// A 2-3 plan (plan_flip_2_3) carried out: new cell m is c with its vertex
-// j[m] replaced by the apex e; across its facet j[m] is the old outside of c,
-// across its facet i that of n (n's facet opposite c's vertex j[m]), and
-// across its facet j[m'] the new cell m'. New cell 0 is c (one vertex set:
-// its facet j[0] stays), new cell 1 is n (n's facet opposite c's vertex
-// j[1] keeps its outside); each vertex ends pointing to the last new cell
-// that holds it, as with the flip by matching.
+// The 2-3 flip at the facet `(c, i)` (plan_flip_2_3's, which it needs not
+// be given): new cell m is c with its vertex j[m] replaced by the apex e;
+// across its facet j[m] is the old outside of c, across its facet i that of
+// n (n's facet opposite c's vertex j[m]), and across its facet j[m'] the new
+// cell m'. New cell 0 is c (one vertex set: its facet j[0] stays), new cell
+// 1 is n (n's facet opposite c's vertex j[1] keeps its outside); each vertex
+// ends pointing to the last new cell that holds it, as with the flip by
+// matching.
 template <class Tr, class Constraints>
-int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
+int execute_flip_2_3(Tr& tr, typename Tr::Cell_handle c, int i, std::array<typename Tr::Cell_handle, 4>& created,
                      const Constraints& constraints)
 {
   typedef Direct_outer_facet<Tr, Constraints> Outer;
-  const auto c = plan.old_cells[0], n = plan.old_cells[1];
-  const int i = plan.facet_index;
+  const auto n = c->neighbor(i);
   const auto e = n->vertex(n->index(c));
   std::array<int, 3> j;
   for(int k = 0, m = 0; k < 4; ++k)
@@ -319,13 +325,14 @@ int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::
   for(int m = 1; m < 3; ++m) of_c[m] = Outer(c, j[m], true, constraints);
   for(int m = 0; m < 3; ++m) of_n[m] = Outer(n, n->index(c->vertex(j[m])), m != 1, constraints);
   const auto cell_data = constraints.cell_data(c);
+  auto t1 = tuple_of<Tr>(c), t2 = t1;
+  t1[j[1]] = e;
+  t2[j[2]] = e;
 
   created[0] = c;
   created[1] = n;
-  const auto& t1 = plan.new_cells[1];
   n->set_vertices(t1[0], t1[1], t1[2], t1[3]);
   c->set_vertex(j[0], e);
-  const auto& t2 = plan.new_cells[2];
   created[2] = tr.tds().create_cell(t2[0], t2[1], t2[2], t2[3]);
   for(int m = 0; m < 3; ++m)
   {
@@ -339,30 +346,31 @@ int execute_flip_2_3(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::
     of_n[m].glue(created[m], i, constraints);
     for(int l = m + 1; l < 3; ++l) glue_inner_facet(created[m], j[l], created[l], j[m], constraints);
   }
-  const auto d = t2[i];
-  for(const auto v : {t2[j[0]], t2[j[1]], d, e}) v->set_cell(created[2]);
-  c->vertex(j[2])->set_cell(created[1]);
+  for(const auto v : {t2[j[0]], t2[j[1]], t2[i], e}) v->set_cell(created[2]);
+  t1[j[2]]->set_cell(created[1]);
   return 3;
 }
 
-// A 3-2 plan (plan_flip_3_2) carried out: new cell 0 is c with b replaced by
-// the apex e, new cell 1 c with a replaced; across the facet of each opposite
-// the apex is the old outside of c, across its facets i and k those of n and
-// t opposite the replaced vertex, and across the last the other new cell.
-// New cell 0 is c (one vertex set: its facet b stays), new cell 1 reuses
-// the second old cell, n or t, keeping the outside of its outer facet.
+// The 3-2 flip at the facet `(c, i)` whose apex lies beyond the facet `k`
+// of `c` (plan_flip_3_2's, which it needs not be given): new cell 0 is c
+// with b replaced by the apex e, new cell 1 c with a replaced; across the
+// facet of each opposite the apex is the old outside of c, across its facets
+// i and k those of n and t opposite the replaced vertex, and across the last
+// the other new cell. New cell 0 is c (one vertex set: its facet b stays),
+// new cell 1 reuses the old cell that follows c around the edge (a, b), n or
+// t, keeping the outside of its outer facet; the third is deleted.
 template <class Tr, class Constraints>
-int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::Cell_handle, 4>& created,
-                     const Constraints& constraints)
+int execute_flip_3_2(Tr& tr, typename Tr::Cell_handle c, int i, int k,
+                     std::array<typename Tr::Cell_handle, 4>& created, const Constraints& constraints)
 {
   typedef Direct_outer_facet<Tr, Constraints> Outer;
-  const auto c = plan.old_cells[0], second = plan.old_cells[1];
-  const int i = plan.facet_index, k = plan.reflex_index;
   const auto n = c->neighbor(i), t = c->neighbor(k);
   const auto e = n->vertex(n->index(c));
   int a = -1, b = -1;
   for(int m = 0; m < 4; ++m)
     if(m != i && m != k) (a < 0 ? a : b) = m;
+  const bool n_next = (Tr::next_around_edge(a, b) == i);
+  const auto second = n_next ? n : t, third = n_next ? t : n;
   // r[0] = b is replaced in new cell 0, r[1] = a in new cell 1.
   const std::array<int, 2> r = {b, a};
   std::array<Outer, 2> of_c, of_n, of_t;
@@ -374,11 +382,12 @@ int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::
     of_t[m] = Outer(t, t->index(v), m == 0 || second != t, constraints);
   }
   const auto cell_data = constraints.cell_data(c);
-  const auto va = c->vertex(a), vb = c->vertex(b), vd = c->vertex(i), vk = c->vertex(k);
+  auto t1 = tuple_of<Tr>(c);
+  const auto va = t1[a], vb = t1[b], vd = t1[i], vk = t1[k];
+  t1[a] = e;
 
   created[0] = c;
   created[1] = second;
-  const auto& t1 = plan.new_cells[1];
   second->set_vertices(t1[0], t1[1], t1[2], t1[3]);
   c->set_vertex(b, e);
   for(int m = 0; m < 2; ++m)
@@ -396,7 +405,7 @@ int execute_flip_3_2(Tr& tr, const Flip_plan<Tr>& plan, std::array<typename Tr::
   glue_inner_facet(created[0], a, created[1], b, constraints);
   for(const auto v : {vb, vd, vk, e}) v->set_cell(created[1]);
   va->set_cell(created[0]);
-  tr.tds().delete_cell(plan.old_cells[2]);
+  tr.tds().delete_cell(third);
   return 2;
 }
 
@@ -499,8 +508,10 @@ int execute_flip(Tr& tr, const Flip_plan<Tr>& plan,
                  const Constraints& constraints = Constraints())
 {
   if(plan.facet_index >= 0)
-    return plan.kind == FLIP_2_3 ? internal::execute_flip_2_3(tr, plan, created, constraints)
-                                 : internal::execute_flip_3_2(tr, plan, created, constraints);
+    return plan.kind == FLIP_2_3
+               ? internal::execute_flip_2_3(tr, plan.old_cells[0], plan.facet_index, created, constraints)
+               : internal::execute_flip_3_2(tr, plan.old_cells[0], plan.facet_index, plan.reflex_index, created,
+                                            constraints);
   return internal::execute_flip_by_matching(tr, plan, created, constraints);
 }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The two common flips of a facet that is not locally Delaunay, decided by
-// three exact orientation tests and made by the package's flip
-// (`execute_flip` of the plan `classify_facet` would make): the 2-3 flip
+// three exact orientation tests and made by the package's flip (the direct
+// flip `execute_flip` makes of the plan `classify_facet` would make, given
+// the facet instead of the plan): the 2-3 flip
 // when the apex e across the facet (c, i) lies strictly inside the wedge of
 // c at that facet, the 3-2 flip when it lies strictly beyond
 // exactly one other facet of c and the edge between the two has three cells.
@@ -84,15 +85,11 @@ template <class Tr>
 int make_common_flip(Tr& tr, typename Tr::Cell_handle c, int i, const Common_flip& f,
                      std::array<typename Tr::Cell_handle, 4>& made)
 {
-  Flip_plan<Tr> plan;
-  if(f.kind == COMMON_FLIP_2_3)
-    plan_flip_2_3(plan, c, i);
-  else
-  {
-    CGAL_precondition(f.kind == COMMON_FLIP_3_2);
-    plan_flip_3_2(plan, c, i, f.reflex);
-  }
-  return execute_flip(tr, plan, made);
+  // The flip execute_flip makes of plan_flip_2_3's or plan_flip_3_2's plan,
+  // without the plan: nothing here reads the new cells before they are made.
+  if(f.kind == COMMON_FLIP_2_3) return execute_flip_2_3(tr, c, i, made, No_constraints());
+  CGAL_precondition(f.kind == COMMON_FLIP_3_2);
+  return execute_flip_3_2(tr, c, i, f.reflex, made, No_constraints());
 }
 
 } // namespace internal
