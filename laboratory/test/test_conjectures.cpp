@@ -188,7 +188,7 @@ TEST_CASE("The helper rule written again outside the driver makes the driver's s
 TEST_CASE("Fixed: the 199 cospherical points' long helper runs came from the drivers, not the strategy", "[conjectures]")
 {
   // Found by the family experiment (cospherical, 200 points, seed 371) and
-  // shrunk by one point. Up to issue 9, `edge_swap_lab replay` of this case
+  // shrunk by one point. While the drivers' cycles were inexact, a replay of this case
   // converged at cycle 4,848 with seed 371 and had not ended by cycle 200,000
   // with seeds 569 and 833. With the exact cycles (every existing facet
   // visited, tags kept by the driver, a uniform permutation per cycle) all
