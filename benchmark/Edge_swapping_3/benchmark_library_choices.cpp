@@ -14,7 +14,7 @@
 //          std::unordered_map and boost::unordered_map, on a driver's pattern
 //          (32-bit keys, finds, inserts and erases mixed).
 //
-//   benchmark_library_choices [N]   (default 1000000 points)
+//   benchmark_library_choices [N [ROUNDS]]   (default 1000000 points, 5 rounds)
 
 #include "benchmark_common.h"
 #include <CGAL/Edge_swapping_3/internal/common_flips.h>
@@ -24,6 +24,7 @@
 #include <CGAL/Triangulation_3.h>
 #include <boost/unordered_map.hpp>
 #include <boost/version.hpp>
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <random>
@@ -241,47 +242,62 @@ int main(int argc, char** argv)
 {
   start_benchmark(argv);
   const std::size_t n = argc > 1 ? std::stoul(argv[1]) : 1000000;
-  std::printf("benchmark_library_choices %zu\n", n);
+  const int rounds = argc > 2 ? std::stoi(argv[2]) : 5;
+  std::printf("benchmark_library_choices %zu %d\n", n, rounds);
   const auto points = random_points(n, 1);
 
-  // Flips: the same facets of the same triangulation, in a child each.
+  // Flips: the same facets of the same triangulation, in a child each; the
+  // ways taken in turn, `rounds` times, so that a slow spell of the machine
+  // falls on all of them, and each reported by its median.
   {
     Tr start;
     ES::delaunay_by_insertion(start, points);
     const std::size_t pairs = disjoint_2_3_facets(start).size();
-    std::printf("\nflips: %zu facets of the Delaunay triangulation of %zu random points, each flipped 2-3 and back 3-2\n",
-                pairs, n);
+    struct Way
+    {
+      const char* name;
+      bool phases;
+      Flipper how;
+      std::vector<double> seconds;
+      bool valid = true;
+    };
+    std::vector<Way> ways = {{"CGAL flip_flippable", false, CGAL_TDS, {}},
+                             {"ours, direct, of a facet (no plan)", false, COMMON, {}},
+                             {"ours, execute_flip glued directly", false, DIRECT, {}},
+                             {"ours, execute_flip by matching", false, MATCHING, {}},
+                             {"CGAL flip_flippable", true, CGAL_TDS, {}},
+                             {"ours, execute_flip of a plan", true, DIRECT, {}}};
+    for(int round = 0; round < rounds; ++round)
+      for(Way& way : ways)
+      {
+        const Measure m = in_child([&](double* out) {
+          Tr tr = start;
+          const auto facets = disjoint_2_3_facets(tr);
+          out[0] = way.phases ? flip_phases(tr, facets, way.how == CGAL_TDS) : flip_pairs(tr, facets, way.how);
+          out[1] = tr.is_valid() ? 1 : 0;
+        });
+        way.seconds.push_back(m.values[0]);
+        way.valid = way.valid && m.values[1] == 1;
+      }
+    auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      return v[v.size() / 2];
+    };
+    std::printf("\nflips: %zu facets of the Delaunay triangulation of %zu random points, each flipped 2-3 and back 3-2;"
+                " median of %d rounds (min, max)\n",
+                pairs, n, rounds);
     std::printf("  %-34s %9s %12s %6s\n", "flip", "s", "ns a flip", "valid");
     double cgal_s = 0;
-    for(Flipper how : {CGAL_TDS, COMMON, DIRECT, MATCHING})
+    for(const Way& way : ways)
     {
-      const Measure m = in_child([&](double* out) {
-        Tr tr = start;
-        const auto facets = disjoint_2_3_facets(tr);
-        out[0] = flip_pairs(tr, facets, how);
-        out[1] = tr.is_valid() ? 1 : 0;
-      });
-      const char* name = how == CGAL_TDS ? "CGAL flip_flippable"
-                         : how == COMMON ? "ours, direct, of a facet (no plan)"
-                         : how == DIRECT ? "ours, execute_flip glued directly"
-                                         : "ours, execute_flip by matching";
-      if(how == CGAL_TDS) cgal_s = m.values[0];
-      std::printf("  %-34s %9.3f %12.1f %6s   ratio to CGAL %.2f\n", name, m.values[0], 1e9 * m.values[0] / (2.0 * pairs),
-                  m.values[1] == 1 ? "yes" : "NO", m.values[0] / cgal_s);
-    }
-    std::printf("  all 2-3 flips, then all 3-2 flips back; our plans made before each phase's timer:\n");
-    for(bool cgal : {true, false})
-    {
-      const Measure m = in_child([&](double* out) {
-        Tr tr = start;
-        const auto facets = disjoint_2_3_facets(tr);
-        out[0] = flip_phases(tr, facets, cgal);
-        out[1] = tr.is_valid() ? 1 : 0;
-      });
-      if(cgal) cgal_s = m.values[0];
-      std::printf("  %-34s %9.3f %12.1f %6s   ratio to CGAL %.2f\n",
-                  cgal ? "CGAL flip_flippable" : "ours, execute_flip of a plan", m.values[0],
-                  1e9 * m.values[0] / (2.0 * pairs), m.values[1] == 1 ? "yes" : "NO", m.values[0] / cgal_s);
+      if(way.phases && way.how == CGAL_TDS)
+        std::printf("  all 2-3 flips, then all 3-2 flips back; our plans made before each phase's timer:\n");
+      const double s = median(way.seconds);
+      if(way.how == CGAL_TDS) cgal_s = s;
+      std::printf("  %-34s %9.3f %12.1f %6s   ratio to CGAL %.2f   (%.3f, %.3f)\n", way.name, s,
+                  1e9 * s / (2.0 * pairs), way.valid ? "yes" : "NO", s / cgal_s,
+                  *std::min_element(way.seconds.begin(), way.seconds.end()),
+                  *std::max_element(way.seconds.begin(), way.seconds.end()));
     }
   }
 
