@@ -33,6 +33,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import results_archive  # noqa: E402
 from write_random12all_certified import (  # noqa: E402
     CONJECTURES_MD, HERE, RESULTS, ROOT, Disagree, Shard, and_list, check_files, fewest_rows, ranges,
     replace_once, stops_text, write_files)
@@ -113,7 +114,7 @@ def fewest_text(by_fewest):
 
 
 def kept_dir(set_number):
-    return os.path.join(RESULTS, "random12_set%d_all_readings" % set_number)
+    return results_archive.folder("random12_set%d_all_readings" % set_number)
 
 
 def add(set_number, outdirs):

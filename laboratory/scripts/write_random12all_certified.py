@@ -23,10 +23,13 @@ import statistics
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import results_archive  # noqa: E402
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 RESULTS = os.path.join(ROOT, "laboratory", "results")
-KEPT = os.path.join(RESULTS, "random12all_certified")
+KEPT = results_archive.folder("random12all_certified")
 LOOPS_MD = os.path.join(RESULTS, "random12_certified_loops.md")
 CONJECTURES_MD = os.path.join(ROOT, "laboratory", "doc", "conjectures.md")
 SHARDS = 64
@@ -153,7 +156,7 @@ def check_against_streams(shards):
     for s in shards:
         result = subprocess.run(
             [sys.executable, os.path.join(HERE, "certified_against_stream.py"), "--stream",
-             os.path.join(RESULTS, "random12all", "shard_%d.jsonl.xz" % s.index), "--certified", s.path],
+             os.path.join(results_archive.folder("random12all"), "shard_%d.jsonl.xz" % s.index), "--certified", s.path],
             capture_output=True, text=True)
         said = (result.stdout.strip().splitlines() or [""])[-1] + result.stderr.strip()
         if result.returncode != 0 or "36 of 36 readings agree" not in said:

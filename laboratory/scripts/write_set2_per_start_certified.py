@@ -21,13 +21,14 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import results_archive  # noqa: E402
 from write_random12all_certified import check_files, ranges, write_files  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 RESULTS = os.path.join(ROOT, "laboratory", "results")
-KEPT = os.path.join(RESULTS, "random12_per_start_certified")
-STREAM = os.path.join(RESULTS, "random12_per_start", "set2.jsonl.xz")
+KEPT = results_archive.folder("random12_per_start_certified")
+STREAM = os.path.join(results_archive.folder("random12_per_start"), "set2.jsonl.xz")
 LOOPS_MD = os.path.join(RESULTS, "random12_certified_loops.md")
 CONJECTURES_MD = os.path.join(ROOT, "laboratory", "doc", "conjectures.md")
 READING = "until-destroyed,pass-over,no-swap-no-tag"

@@ -237,7 +237,7 @@ exit 1
   # Keeping a task for the docs (write_all_readings_certified.py): only a shard of 64 of the
   # 12 random points of set 2 or 3 that agrees; else exit 2, a message, and nothing kept.
   keep=$source_dir/laboratory/scripts/write_all_readings_certified.py
-  kept=$source_dir/laboratory/results/random12_set3_all_readings
+  kept=${EDGE_SWAP_LAB_UNPACKED:-$source_dir/laboratory/results}/random12_set3_all_readings
   kept_files() { if [ -d "$kept" ]; then find "$kept" | wc -l; else echo 0; fi; }
   before=$(kept_files)
   for bad in "3 --add $work/task" "3 --add $work/nonexistent" "3 --add" "4" "1" "3 --bogus" "" "3 --check --add"; do

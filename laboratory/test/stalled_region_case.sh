@@ -11,7 +11,8 @@ edge_swap=${1:?usage: stalled_region_case.sh EDGE_SWAP_LAB SOURCE_DIR WORK_DIR}
 source_dir=${2:?}
 work=${3:?}
 make_case=$source_dir/laboratory/scripts/stalled_region_case.py
-region=$source_dir/laboratory/results/stall_helper_1e6
+# The folder unpacked from results/stall_helper_1e6.tar.xz.
+region=${EDGE_SWAP_LAB_UNPACKED:-$source_dir/laboratory/results}/stall_helper_1e6
 rm -rf "$work"
 mkdir -p "$work"
 fail() {

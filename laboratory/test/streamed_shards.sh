@@ -83,13 +83,13 @@ $summarize per_start.jsonl > per_start.txt || fail "a per-start file alone is re
 
 # The kept shards of the 12 random points under all readings add up to the
 # table that the report shows.
-kept=("$src"/laboratory/results/random12all/shard_*.jsonl.xz)
-if [ -e "${kept[0]}" ]; then
-  $summarize "${kept[@]}" > kept.txt
-  diff <(table kept.txt) <(table "$src/laboratory/results/random12all_shards.md") ||
-    fail "results/random12all/ does not add up to the table of results/random12all_shards.md"
-  grep -q 'stopped early' kept.txt && fail "a kept random12all shard is unfinished"
-fi
+unpacked=${EDGE_SWAP_LAB_UNPACKED:-$src/laboratory/results}
+kept=("$unpacked"/random12all/shard_*.jsonl.xz)
+[ -e "${kept[0]}" ] || fail "no shard in $unpacked/random12all: unpack results/random12all.tar.xz there"
+$summarize "${kept[@]}" > kept.txt
+diff <(table kept.txt) <(table "$src/laboratory/results/random12all_shards.md") ||
+  fail "results/random12all/ does not add up to the table of results/random12all_shards.md"
+grep -q 'stopped early' kept.txt && fail "a kept random12all shard is unfinished"
 # Set 3 of the 12 random points (the package's reading), kept whole, gives its table in stream_topcom.md.
 set3=$src/laboratory/results/random12_set3.jsonl.xz
 $summarize "$set3" > set3.txt
@@ -100,7 +100,7 @@ diff <(table set3.txt) <(table set3_section.md) ||
 grep -q 'stopped early' set3.txt && fail "the kept set 3 file is unfinished"
 # The three sets run with a priority per start, kept whole, give their tables in stream_topcom.md.
 for set in 1 2 3; do
-  kept_set=$src/laboratory/results/random12_per_start/set$set.jsonl.xz
+  kept_set=$unpacked/random12_per_start/set$set.jsonl.xz
   $summarize "$kept_set" > per_start_set$set.txt
   awk -v head="### Set $set, a priority per start" '$0 == head { on = 1; next } on && /^##/ { exit } on' \
     "$src/laboratory/results/stream_topcom.md" > per_start_set$set.md
