@@ -1,9 +1,31 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# README command 2: install what is missing, build everything in Release, run the whole test suite.
+# README command 2: install what is missing, build what the tests need in
+# Release, run the test suite (every test but those labelled `extended`).
+#   --extended   also build the examples, the benchmarks and the laboratory,
+#                and run the tests labelled `extended` (the laboratory's
+#                pipelines, headers compiled alone, install, examples).
+# Prints the seconds each step took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install_dependencies.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j "$(nproc)"
-ctest --test-dir build --output-on-failure -j "$(nproc)"
+extended=OFF
+case "${1:-}" in
+  "") ;;
+  --extended) extended=ON ;;
+  *) echo "build_and_test.sh: unknown option '$1' (known: --extended)" >&2; exit 2 ;;
+esac
+step() { # NAME COMMAND...: runs it and says how long it took
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "build_and_test.sh: $name took $((SECONDS - start)) s"
+}
+step "installing what is missing" bash scripts/install_dependencies.sh
+step "configuring" cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEDGE_SWAPPING_3_BUILD_EXAMPLES=$extended \
+  -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=$extended -DEDGE_SWAPPING_3_BUILD_LABORATORY=$extended
+step "building" cmake --build build -j "$(nproc)"
+if [ $extended = ON ]; then
+  step "the extended tests" ctest --test-dir build --output-on-failure -j "$(nproc)" -L extended
+else
+  step "the tests" ctest --test-dir build --output-on-failure -j "$(nproc)" -LE extended
+fi

@@ -10,7 +10,6 @@
 #include "program_runner.h"
 #include <CGAL/Edge_swapping_3/IO/medit.h>
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
-#include <CGAL/Edge_swapping_3/make_two_spheres_mesh.h>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -254,7 +253,11 @@ TEST_CASE("Domains of any shape: an L-shape, a cube with a cavity, two regions, 
 TEST_CASE("Domains of any shape: two spherical cavities in a box (Mesh_3's mesh without its subdomain 0)",
           "[domain][any shape]")
 {
-  const Mesh full = ES::make_two_spheres_mesh<K>(0.7);
+  // Mesh_3's mesh of the two-spheres domain (make_two_spheres_mesh), made by
+  // the program: this file then compiles no Mesh_3.
+  Workdir w;
+  REQUIRE(w.run("mesh-domain two-spheres --size 0.7 --quiet -o " + w.path("two_spheres.mesh")).exit_code == 0);
+  const Mesh full = ES::IO::read_mesh_with_fields<Point>(w.path("two_spheres.mesh"));
   // Keep the cells of the flow region and the points they use, renumbered.
   Mesh m;
   m.is_mesh = m.has_references = true;
