@@ -8,7 +8,7 @@
 //   repair2 the same with number_of_threads(2): round 1's scan on two threads
 //   random  the same in random face order (a uniform permutation per round)
 //   helper  swap_edges_with_helper (work queue)
-//   cycles  swap_edges, the paper's cycles, no repair (the drivers up to issue 9 swept like this)
+//   cycles  swap_edges, the paper's cycles, no repair
 //   rcycles the same in random face order (a uniform permutation of the facets per cycle)
 // Each result is compared with CGAL's, cell for cell. Memory: the bytes the
 // driver allocated beyond the triangulation at its peak (operator new counted).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Benchmark (not a test): the quality operations on the inputs of issue 11,
-// beside the peers on the same meshes (quality_peers.h). Inputs: the
+// Benchmark (not a test): the quality operations on three inputs, beside
+// the peers on the same meshes (quality_peers.h). Inputs: the
 // two-spheres domain mesh (`edge_swap mesh-domain two-spheres`, measured on
 // its flow region, boundaries and subdomains kept), and the Delaunay and the
 // placing triangulation of 8,000 random points (measured on the cells with
@@ -10,8 +10,7 @@
 // then with the topological operations, and with smoothing too, for MaxMin,
 // the radius ratio, the dihedral sine and the volume-length ratio; then
 // TetGen's optimizer, CGAL's remeshing steps and Gmsh's optimizer.
-// Columns as in issue 11's
-// table: smallest and largest dihedral angle, cells below 10 and above 165
+// Columns: smallest and largest dihedral angle, cells below 10 and above 165
 // and 175 degrees, the 1st percentile of the radius ratio 3 r / R (1 for a
 // regular tetrahedron), then the time (the optimizer alone) and the
 // operations. Each output is validated (rebuilt, orientations checked) and
@@ -210,7 +209,7 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
   other(ES::Max_min_dihedral_sine_criterion(), "dihedral sine");
   other(ES::Max_min_volume_length_criterion(), "volume-length");
 
-  // The peers. TetGen aims at 140 degrees, as in issue 11's table.
+  // The peers. TetGen aims at a largest dihedral angle of 140 degrees (optmaxdihedral).
 #ifdef EDGE_SWAPPING_3_WITH_TETGEN
   peer_row("TetGen 1.5 flips (140 deg)", [&] { return quality_peers::tetgen_optimizer(input, 1, 140); }, input, counted);
   peer_row("TetGen 1.5 flips + smoothing", [&] { return quality_peers::tetgen_optimizer(input, 3, 140); }, input,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The peers of the quality benchmark (issue 11): each takes the same mesh as
+// The peers of the quality benchmark (benchmark_quality_operations): each takes the same mesh as
 // lists of points and tetrahedra with a subdomain per tetrahedron, and gives
 // its result back the same way, so that one quality code measures every row.
 //  - TetGen 1.5's optimizer through libtet (when CMake found it): the mesh is

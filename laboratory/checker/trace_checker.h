@@ -172,7 +172,7 @@ public:
             "same-cycle needs the priority, random or adversarial order");
     sweep_in_order_ = sweep_ && order_ != "adversarial";
     // Random sweeps: cycle k's seed is m(m(seed) + k) in traces that say so
-    // (written since stop 41), m(seed + k) in older ones (traces.md).
+    // ("sweep_seeds" in the header), m(seed + k) in older ones (traces.md).
     if(header.contains("sweep_seeds"))
     {
       require(header.at("sweep_seeds") == "m(m(seed) + cycle)", "unknown sweep_seeds");

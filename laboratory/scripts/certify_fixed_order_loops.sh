@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Issue 13: the helper in the fixed face order of SEEDS from every fine
+# The helper in the fixed face order of SEEDS from every fine
 # triangulation of CASE's points, under each reading of Algorithm 4; every
 # run not ending on CGAL's triangulation is traced and replayed by the
 # independent checker, which certifies the loops (experiment_priority_loops).

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Issue 13, item 5, as one task of a cluster job array: shard I of N of every
+# One task of a cluster job array: shard I of N of every
 # fine triangulation of a point set (TOPCOM, streamed, never all held), each run
 # under every reading and order (edge_swap_lab experiment --stream --readings all:
 # plain swapping in 3 orders and the helper in 90 reading-and-order pairs, 93

@@ -1,6 +1,6 @@
 #!/bin/bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Issue 13, item 5: every fine triangulation (TOPCOM, streamed: never all
+# Every fine triangulation (TOPCOM, streamed: never all
 # held) of the degenerate sets and of random integer sets of 12 points.
 # Each step writes one file of tallies and resumes where it stopped.
 #

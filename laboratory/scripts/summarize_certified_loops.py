@@ -120,7 +120,7 @@ def collect(dirs):
                 raise Mixed("runs with --order-seeds per-set (%s) and per-start (%s) are other samples; "
                             "summarize them apart" % (kinds["per-set"], kinds["per-start"]))
             runs, limit, certified, stuck = (int(found[-1].group(k + 1)) for k in range(4))
-            # Files from before the trace limit (stop 35) have no such line: their runs
+            # Files written before the trace limit have no such line: their runs
             # at the limit that are not certified are counted as not settled.
             later = [m for m in map(LATER.match, lines) if m]
             ended, stuck_later, going = ((int(later[-1].group(k + 1)) for k in range(3)) if later

@@ -105,7 +105,7 @@ TEST_CASE("Joe's phenomenon: 9 points where plain swapping is stuck and the help
 
 TEST_CASE("Fixed: the storage-order loops from 8 points (TOPCOM start) and 20 points came from the drivers", "[conjectures]")
 {
-  // Up to issue 9 the helper in storage order had not ended by cycle 300
+  // With an early driver the helper in storage order had not ended by cycle 300
   // from these starts (the 8-point one is one of the 131 fine triangulations
   // of 8 random integer points, TOPCOM, random-integer seed 10; a 2-cycle of
   // a help 2-3 and 3-2 and the Delaunay 2-3 and 3-2 undoing them). The
@@ -1624,8 +1624,8 @@ TEST_CASE("Adversarial orders: the effective-visit search reaches the same state
   REQUIRE(compared == 4 * 6 * 36 + 25 + 21); // 6 starts in each 6-point set; 25 and 21 in the 7-point sets
   REQUIRE(loops == 340);
 
-  // Set 25 of 7 points, whose 24 starts the search over every order did not
-  // settle (stop 31): every start settles, with no loop, and random orders
+  // Set 25 of 7 points, whose 24 starts a bounded search over every order
+  // left unsettled: every start settles, with no loop, and random orders
   // end the run with probability one.
   const auto points = ES::point_families::random_integer<Point>(7, 25);
   std::vector<nlohmann::json> headers;
@@ -2011,8 +2011,8 @@ TEST_CASE("The trace checker rejects altered traces, naming the line", "[conject
 TEST_CASE("Random sweeps (same-cycle): nearby seeds draw their own sweeps, and traces say how they were seeded",
           "[conjectures][traces]")
 {
-  // Until stop 41 cycle k's sweep seed was m(seed + k), so seed s + 1 drew in
-  // cycle k the sweep of seed s in cycle k + 1.
+  // With m(seed + k) as cycle k's sweep seed (older traces), seed s + 1 would
+  // draw in cycle k the sweep of seed s in cycle k + 1.
   std::set<std::uint64_t> sweep_seeds;
   for(std::uint64_t seed = 0; seed < 200; ++seed)
     for(std::uint64_t cycle = 1; cycle <= 200; ++cycle)
@@ -2050,7 +2050,7 @@ TEST_CASE("Random sweeps (same-cycle): nearby seeds draw their own sweeps, and t
   ES::trace_conjecture_case(c, next_cycle);
   REQUIRE_FALSE(nlohmann::json::parse(text_lines(next_cycle.str())[0]).contains("sweep_seeds"));
 
-  // A trace written before stop 41 (random sweeps, the older seeds) is still confirmed.
+  // An older trace (random sweeps, the older seeds) is still confirmed.
   const std::string older = test::Workdir::slurp(std::string(EDGE_SWAPPING_3_LABORATORY_FIXTURES) +
                                                  "/../../results/"
                                                  "trap_25_points_stuck_seed_38_same_cycle.trace.jsonl");

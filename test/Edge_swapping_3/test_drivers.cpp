@@ -127,8 +127,8 @@ std::vector<Start> replay_starts()
 
 TEST_CASE("Paper cycles: the helper driver makes the naive replay's swaps, cycle for cycle", "[drivers]")
 {
-  // The drivers up to issue 9 failed this: on the cospherical fixture they
-  // skipped facets that still existed (748 in 3,000 cycles).
+  // Drivers that lose facets fail this: on the cospherical fixture an early
+  // one skipped facets that still existed (748 in 3,000 cycles).
   for(const Start& s : replay_starts())
   {
     INFO(s.name);
@@ -239,8 +239,8 @@ TEST_CASE("Paper cycles: a listed facet that flips destroy and make again is vis
 
 TEST_CASE("Callbacks that run CGAL's traversals do not change a helper run", "[drivers]")
 {
-  // Up to issue 9 the tags lived in the TDS marks, which incident_cells,
-  // is_facet and degree clear: a visitor calling them changed the run.
+  // Tags kept in the TDS marks would be cleared by incident_cells, is_facet
+  // and degree: a visitor calling them would change the run.
   for(auto schedule : {ES::PAPER_CYCLES, ES::WORK_QUEUE})
   {
     INFO((schedule == ES::WORK_QUEUE ? "work queue" : "paper cycles"));
@@ -291,8 +291,8 @@ TEST_CASE("Callbacks that run CGAL's traversals do not change a helper run", "[d
 
 TEST_CASE("Random face order is a uniform permutation, not a shuffle of 512-facet blocks", "[drivers]")
 {
-  // The drivers up to issue 9 shuffled blocks of 512 and each block in place:
-  // the facet listed first could never be visited 600th.
+  // Shuffling blocks of 512 and each block in place would not do: the facet
+  // listed first could never be visited 600th.
   CGAL::Random rng(5);
   std::size_t second_half = 0, at_600 = 0;
   std::vector<int> items(1024);
@@ -709,12 +709,12 @@ TEST_CASE("Delaunay repair: the common flips cut their list of cells set aside a
 
 TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")
 {
-  // Up to issue 9 a cycle without a swap ended the run even when it had set
-  // tags that let the next cycle swap. A rule that only tags in its first
+  // A cycle without a swap must not end the run when it has set tags that
+  // let the next cycle swap. A rule that only tags in its first
   // cycle and then swaps non-Delaunay facets of tagged cells shows the
   // ending: the run goes on after the tag-only cycle to the Delaunay
   // triangulation. (No helper run of 20,000 small random starts searched
-  // here had such a cycle; the replay of issue 10 found one with the old driver.)
+  // here had such a cycle; a replay found one with an older driver.)
   Tr tr;
   ES::insert_by_placing(tr, random_in_cube(300, 8));
   std::size_t cycle = 1;
@@ -747,10 +747,10 @@ TEST_CASE("A cycle that only sets tags does not end the run", "[drivers]")
 
 TEST_CASE("Work queue: a run that the round limit ends reports the facets left exactly", "[drivers]")
 {
-  // Up to stop 21 the count after a work-queue run came from the facets kept
-  // at their last visit only: when the round limit ended the run, the facets
-  // changed since (still queued) were missed (602 reported, 6,157 left, for
-  // the helper from a placing start of 3,000 points after one round).
+  // A count from the facets kept at their last visit only would miss, when
+  // the round limit ends the run, the facets changed since (still queued):
+  // 602 reported, 6,157 left, for the helper from a placing start of 3,000
+  // points after one round.
   const auto points = random_in_cube(1500, 4);
   for(std::size_t rounds : {1, 2, 3})
   {

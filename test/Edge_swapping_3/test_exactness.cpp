@@ -99,7 +99,7 @@ ES::Swap_report helper_in_storage_order(Tr& tr, std::size_t max_cycles)
 
 TEST_CASE("Fixed: the storage-order 'cycles' of the 300-point fixture and the 11x11x11 grid came from skipped facets", "[exactness][helper][finding]")
 {
-  // With the drivers up to issue 9, the helper in storage order had not
+  // With an early driver, the helper in storage order had not
   // ended by cycle 300 on both (a 2-cycle on the fixture): facets that still
   // existed were not found again and skipped, tags were lost to CGAL's
   // traversals, and a cycle that only set tags ended the run. With the exact

@@ -51,10 +51,10 @@ std::uint64_t facet_priority(std::uint64_t seed, const Point& p, const Point& q,
 
 /// The seed of cycle `cycle`'s sweep in random order when the facets made
 /// during a cycle are visited in it (same-cycle): SplitMix64 of the run's seed,
-/// plus the cycle, through SplitMix64 again. Until stop 41 it was
-/// SplitMix64(`seed` + `cycle`), so that seed s + 1 drew in cycle k the sweep
-/// of seed s in cycle k + 1: runs of nearby seeds that met in one state went on
-/// alike, shifted by a cycle, and were not independent samples.
+/// plus the cycle, through SplitMix64 again. With SplitMix64(`seed` + `cycle`)
+/// (older traces' seeds) seed s + 1 would draw in cycle k the sweep of seed s
+/// in cycle k + 1: runs of nearby seeds that met in one state would go on
+/// alike, shifted by a cycle, and would not be independent samples.
 inline std::uint64_t random_sweep_seed(std::uint64_t seed, std::uint64_t cycle)
 {
   return splitmix64(splitmix64(seed) + cycle);

@@ -45,7 +45,7 @@ public:
     header["format"] = "Edge_swapping_3 visit trace";
     header["version"] = 1;
     // Random sweeps (same-cycle) take their seeds as internal::random_sweep_seed
-    // does since stop 41; traces without this field are older (traces.md).
+    // does; traces without this field are older (traces.md).
     const std::string reading = header.value("reading", "");
     const std::string same_cycle = ",same-cycle";
     if(header.value("order", "") == "random" && reading.size() > same_cycle.size() &&
