@@ -5,7 +5,7 @@
 # the n-th case in name order (n from 0) runs seeds n*SEEDS+1 to n*SEEDS+SEEDS.
 # Runs of one seed from different starts that meet in one state go on as one
 # run, so shared seeds would not give independent samples (conjectures.md,
-# "Seeds per start (stop 42)").
+# "Seeds per start").
 #
 #   escape_times_of_cases.sh CASES_DIR SEEDS MAX_CYCLES OUT [THREADS]
 #

@@ -36,15 +36,15 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import results_archive  # noqa: E402
 from write_random12all_certified import (  # noqa: E402
     CONJECTURES_MD, HERE, RESULTS, ROOT, Disagree, Shard, and_list, check_files, fewest_rows, ranges,
-    replace_once, stops_text, write_files)
+    replace_once, dates_text, write_files)
 
 SHARDS = 64
 RUNS_A_START = 93  # plain swapping in 3 orders, the helper in 90 reading-and-order pairs
-# Per start, the runs the step random12 made already (plain swapping and the package's
-# reading, each in the 3 orders), and the stop that made them for each set.
+# Per start, the runs the first streams of the 12 random points made already (plain swapping
+# and the package's reading, each in the 3 orders), for each of these sets.
 REPEATED_A_START = 6
-RANDOM12_STOP = {2: 31, 3: 43}
-INSTANCES_UP_TO_STOP_47 = 279968001  # conjectures.md's count before these sets (stops 48 to 54 certified only)
+RANDOM12_SETS = (2, 3)
+INSTANCES_BEFORE_ALL_READINGS = 279968001  # conjectures.md's count before these sets
 UNREADABLE = (OSError, ValueError, KeyError, IndexError, TypeError, AttributeError, AssertionError,
               lzma.LZMAError, EOFError)  # a kept or given folder that is not a task's
 INSTANCES = re.compile(r" instances in ([0-9.]+) s on 1 threads$")
@@ -104,8 +104,8 @@ def starts_words(starts, total, whose):
     return "%s of %s %s starts" % (format(starts, ","), whose, format(total, ","))
 
 
-def stops_words(stops):
-    return ("stop %s" if len(stops) == 1 else "stops %s") % stops_text(stops)
+def dates_words(dates):
+    return "run " + dates_text(dates)
 
 
 def fewest_text(by_fewest):
@@ -184,12 +184,11 @@ def document(set_number, tasks, readings):
     starts = sum(t.starts for t in tasks)
     limit = sum(t.certified.limit for t in tasks)
     seconds = sum(t.seconds for t in tasks)
-    stops = sorted({stop for t in tasks for stop in t.certified.stops})
+    dates = sorted({d for t in tasks for d in t.certified.dates})
     rows = fewest_rows([t.certified for t in tasks], readings)
     by_fewest = collections.Counter(r[2] for r in rows)
     total = tasks[0].triangulations
-    out = ["# Set %d of the 12 random integer points under every reading and order, certified (%s)\n" % (
-        set_number, stops_words(stops))]
+    out = ["# Set %d of the 12 random integer points under every reading and order, certified\n" % set_number]
     out.append("""Every fine triangulation of set %d (TOPCOM, %s, streamed) runs under every reading and order:
 plain swapping in the 3 orders and the helper in the 90 pairs of a reading (36) and an order
 (storage, random, the fixed priority of seed %d; the 18 `same-cycle` readings have no storage
@@ -216,22 +215,22 @@ with `--check`.
     out.append("**%s of 64 (%s, %s runs):** under each of the 36 readings,\n"
                "in each shard, the runs at the limit are the stream's in number, and **every one of the %s\n"
                "fixed-order runs at the limit is a certified loop**. Times are wall seconds of one task on one\n"
-               "core of this 2-core machine, two tasks at a time, beside whatever else that stop's session ran\n"
-               "(builds, tests, doc builds; several stops began on a new machine), so they compare best within\n"
-               "one stop: the stream's (the times its log gives, TOPCOM's listing included; an attempt cut\n"
+               "core of this 2-core machine, two tasks at a time, beside whatever else the machine ran then\n"
+               "(builds, tests, doc builds; some days on another machine), so they compare best within\n"
+               "one day: the stream's (the times its log gives, TOPCOM's listing included; an attempt cut\n"
                "before its end is not counted) and the certification's (its progress lines).\n" % (
                    shards_text(indices).capitalize(), starts_words(starts, total, "the"),
                    format(RUNS_A_START * starts, ","),
                    format(limit, ",")))
     out.append("| shard | starts | runs | fixed-order runs at the limit (36 readings) | certified loops "
-               "| stream s | certification s | run at stop |")
+               "| stream s | certification s | run on (UTC) |")
     out.append("|---:|---:|---:|---:|---:|---:|---:|---|")
     for t in tasks:
         c = t.certified
         out.append("| %d | %s | %s | %s | %s | %s | %s | %s |" % (
             t.index, format(t.starts, ","), format(RUNS_A_START * t.starts, ","), format(c.limit, ","),
             format(c.certified, ","), format(round(t.stream_seconds), ","), format(c.seconds, ","),
-            stops_text(c.stops)))
+            dates_text(c.dates)))
     out.append("")
     out.append("In all %s runs in %s s on one core (%s runs and %s certified loops a core-hour)." % (
         format(RUNS_A_START * starts, ","), format(round(seconds), ","),
@@ -258,7 +257,7 @@ with `--check`.
     else:
         out.append("All 64 shards are certified: every fine triangulation of set %d under each reading and order.\n"
                    % set_number)
-    return name, "\n".join(out), dict(indices=indices, starts=starts, limit=limit, seconds=seconds, stops=stops,
+    return name, "\n".join(out), dict(indices=indices, starts=starts, limit=limit, seconds=seconds, dates=dates,
                                       total=total, fewest=fewest_text(by_fewest))
 
 
@@ -293,7 +292,7 @@ def conjectures_text(text, set_number, facts):
         text, row_pattern,
         "| 12 random integer points, set %d, under all 36 readings, %s (%s; one task a shard, "
         "`stream_and_certify_shard.sh`) | all 36 | %s | %s | %s | 0 | %s s |" % (
-            set_number, shards, stops_words(f["stops"]), format(36 * f["starts"], ","), format(f["limit"], ","),
+            set_number, shards, dates_words(f["dates"]), format(36 * f["starts"], ","), format(f["limit"], ","),
             format(f["limit"], ","), format(round(f["seconds"]), ",")),
         set_number, "\n", "set %d's certified row" % set_number)
     return place(
@@ -308,18 +307,18 @@ def conjectures_text(text, set_number, facts):
 def instance_count(text, loaded):
     """The sentence of conjectures.md that adds the sets' runs to the laboratory's instance count;
     loaded: the kept shards already read, by set."""
-    parts, total = [], INSTANCES_UP_TO_STOP_47
-    for set_number in sorted(RANDOM12_STOP):
+    parts, total = [], INSTANCES_BEFORE_ALL_READINGS
+    for set_number in RANDOM12_SETS:
         tasks = loaded[set_number] if set_number in loaded else load_tasks(set_number)
         starts = sum(t.starts for t in tasks)
         if starts:
             total += (RUNS_A_START - REPEATED_A_START) * starts
-            parts.append("set %d's %s of 64 (%s instances, less the %s repeating stop %d's)" % (
+            parts.append("set %d's %s of 64 (%s instances, less the %s that repeat its first stream's)" % (
                 set_number, shards_text([t.index for t in tasks]), format(RUNS_A_START * starts, ","),
-                format(REPEATED_A_START * starts, ","), RANDOM12_STOP[set_number]))
+                format(REPEATED_A_START * starts, ",")))
     return replace_once(
-        text, r"Sets 2 and 3 of the 12 random points under every reading \(since stop 55\) add [^\n]*?, for [0-9,]+\.",
-        "Sets 2 and 3 of the 12 random points under every reading (since stop 55) add %s, for %s." % (
+        text, r"Sets 2 and 3 of the 12 random points under every reading add [^\n]*?, for [0-9,]+\.",
+        "Sets 2 and 3 of the 12 random points under every reading add %s, for %s." % (
             and_list(parts), format(total, ",")), "the instance count")
 
 

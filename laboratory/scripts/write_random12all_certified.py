@@ -34,37 +34,15 @@ LOOPS_MD = os.path.join(RESULTS, "random12_certified_loops.md")
 CONJECTURES_MD = os.path.join(ROOT, "laboratory", "doc", "conjectures.md")
 SHARDS = 64
 
-# When each working session (stop) began, UTC: a shard's stops are those its progress.txt
-# times fall in.
-STOP_STARTS = [(46, "2026-12-03T00:00:00Z"), (47, "2026-12-03T04:40:00Z"), (48, "2026-12-03T07:45:00Z"),
-               (49, "2026-12-03T11:00:00Z"), (50, "2026-12-03T13:56:00Z"),
-               (51, "2026-12-03T17:05:00Z"), (52, "2026-12-03T20:12:00Z"),
-               (53, "2026-12-03T23:18:00Z"), (54, "2026-12-04T02:17:00Z"),
-               (55, "2026-12-04T05:18:00Z"), (56, "2026-12-04T08:27:00Z"),
-               (57, "2026-12-04T11:35:00Z"),
-               (58, "2026-12-04T14:20:00Z"),
-               (59, "2026-12-04T17:18:00Z"),
-               (60, "2026-12-04T20:15:00Z"),
-               (61, "2026-12-04T23:15:00Z")]
-
 COUNTS = re.compile(r"^all seeds: (\d+) runs, (\d+) still swapping \((\d+) loops certified by the checker\), (\d+) stuck$")
 FEWEST = re.compile(r"^fewest swaps in a certified loop: (\d+) ")
 LADDER = re.compile(r"^loops certified by cycles traced: (.*)$")
-DRIVER = re.compile(r"^loops the driver found: (\d+), ")  # since stop 51: one trace a loop
+DRIVER = re.compile(r"^loops the driver found: (\d+), ")  # one trace a loop, to where the driver found it
 PROGRESS = re.compile(r"^.*, ([a-z-]+,[a-z-]+,[a-z-]+(?:,same-cycle)?): (\d+) s, (\S+)$")
 
 
 def parse_time(text):
     return datetime.datetime.strptime(text, "%Y-%m-%dT%H:%M:%SZ")
-
-
-def stop_of(moment):
-    stop = None
-    for number, start in STOP_STARTS:
-        if moment >= parse_time(start):
-            stop = number
-    assert stop is not None, moment
-    return stop
 
 
 def and_list(items):
@@ -88,9 +66,10 @@ def ranges(numbers):
     return and_list(parts)
 
 
-def stops_text(stops):
-    stops = sorted(set(stops))
-    return ranges(stops)
+def dates_text(dates):
+    """2026-12-03 to 2026-12-05: the UTC days a shard's readings ended on"""
+    dates = sorted(set(dates))
+    return dates[0].isoformat() if len(dates) == 1 else "%s to %s" % (dates[0].isoformat(), dates[-1].isoformat())
 
 
 class Disagree(Exception):
@@ -104,7 +83,7 @@ class Shard:
         self.ladder = collections.Counter()
         self.seconds, self.times = 0, []
         self.streamed = False
-        self.driver_traced = 0  # readings run with stop 51's traces (to where the driver found the loop)
+        self.driver_traced = 0  # readings whose loops were traced once, to where the driver found them
         for name in os.listdir(path):
             if not name.endswith(".txt") or name == "progress.txt":
                 continue
@@ -131,16 +110,16 @@ class Shard:
         self.starts = next(iter(self.readings.values()))[0]
         self.limit = sum(r[1] for r in self.readings.values())
         self.certified = sum(r[2] for r in self.readings.values())
-        self.stops = sorted({stop_of(t) for t in self.times})
+        self.dates = sorted({t.date() for t in self.times})
 
 
     def pipeline(self):
-        """The stop whose pipeline ran the shard: 46 streamed, 47 held, 51 one trace a loop."""
+        """How the shard ran: its starts streamed, held, or held with one trace a loop."""
         if self.streamed:
-            return "stop 46"
+            return "streamed"
         if self.driver_traced == 0:
-            return "stop 47"
-        return "stop 51" if self.driver_traced == len(self.readings) else "stops 47 and 51"
+            return "held"
+        return "one trace a loop" if self.driver_traced == len(self.readings) else "held, then one trace a loop"
 
 
 def load_shards():
@@ -194,7 +173,7 @@ def section(shards, readings):
     starts = sum(s.starts for s in shards)
     limit = sum(s.limit for s in shards)
     runs = 36 * starts
-    all_stops = sorted({stop for s in shards for stop in s.stops})
+    all_dates = sorted({d for s in shards for d in s.dates})
     ladder = collections.Counter()
     for s in shards:
         ladder.update(s.ladder)
@@ -203,10 +182,10 @@ def section(shards, readings):
     differ = [r for r in rows if r[4]]
     left = SHARDS - len(shards)
     # The estimate for the shards left: the current pipeline's shards only (one trace a loop).
-    current = [s for s in shards if s.pipeline() == "stop 51"]
+    current = [s for s in shards if s.pipeline() == "one trace a loop"]
     median = statistics.median(s.seconds for s in current)
     out = []
-    out.append("## Set 1 under all 36 readings, random12all's shards (stops %s)\n" % stops_text(all_stops))
+    out.append("## Set 1 under all 36 readings, random12all's shards\n")
     out.append("""random12all (`random12all_shards.md`) runs every fine triangulation of set 1 under all 36
 readings in seed 1's fixed order, in 64 shards of blocks of 4096 starts (`edge_swap_lab experiment
 --stream`, the block numbered K in shard K modulo 64). The sections above certify the
@@ -225,16 +204,16 @@ laboratory/scripts/certified_against_stream.py --stream laboratory/results/rando
 The output directories are kept in `random12all_certified/`; this section and the random12all
 rows of `conjectures.md` are written from them by
 `laboratory/scripts/write_random12all_certified.py`, which first runs
-`certified_against_stream.py` on each shard and stops unless all 36 readings agree. Shards 0 to
-2 ran with `--hold 0` (stop 46), one process and one TOPCOM enumeration a reading; since stop 47
-the shard's starts are held and the 36 readings run in one process on one enumeration (the
-files are the same but for the first line, which gives the number of triangulations where it
-said "streamed"). Since stop 51 each loop is traced once, to where the helper's driver found
-its state first come back, not on a ladder of longer and longer traces (the same counts, with
-1.6 to 1.9 times less CPU time where measured, `conjectures.md`; a reading's file says how its
-loops were traced in a line of its own, and the pipeline column says which shards ran so).
-Shards 33 and later ran with stop 52's program (shard 34 from its seventh reading on), whose
-checker computes exact volumes in `Gmpzf` and whose trace lines are written by hand: the same
+`certified_against_stream.py` on each shard and stops unless all 36 readings agree. The
+pipeline column says how each shard ran: "streamed", with `--hold 0`, one process and one
+TOPCOM enumeration a reading; "held", the shard's starts held and the 36 readings run in one
+process on one enumeration (the files are the same but for the first line, which gives the
+number of triangulations where it said "streamed"); "one trace a loop", each loop traced once,
+to where the helper's driver found its state first come back, not on a ladder of longer and
+longer traces (the same counts, with 1.6 to 1.9 times less CPU time where measured,
+`conjectures.md`; a reading's file says how its loops were traced in a line of its own).
+Shards 33 and later ran with the program of commit 3fd5e70 (shard 34 from its seventh reading
+on), whose checker computes exact volumes in `Gmpzf` and whose trace lines are written by hand: the same
 files, 17% less CPU time where measured (`conjectures.md`).
 """)
     out.append("**Shards %s (%s starts: shard I is the blocks of 4096 numbered I modulo 64):**\n"
@@ -242,22 +221,21 @@ files, 17% less CPU time where measured (`conjectures.md`).
                "number, and **every one of the %s fixed-order runs at the limit is a certified loop**\n"
                "(`certified_against_stream.py` on each shard: \"36 of 36 readings agree\", exit 0). Times are\n"
                "wall seconds of one process on one core of this 2-core machine, beside one or two other jobs\n"
-               "(at stops 48 and 49 also beside builds: shards 15 and 17 took 5,904 and 5,063 s beside a whole\n"
-               "build of the tests, five jobs on the two cores at times; a shard stopped and resumed\n"
-               "enumerates its starts again). Shards 15 and 17 were first run after stop 48's CI, with the\n"
-               "counts they have here, but their folders were outside the repository and did not outlast\n"
-               "that machine: they were run again at stop 49.\n"
+               "(shards 15 and 17 also beside builds: 5,904 and 5,063 s beside a whole build of the tests,\n"
+               "five jobs on the two cores at times; a shard stopped and resumed enumerates its starts again).\n"
+               "Shards 15 and 17 ran twice, with the same counts: the folders of their first runs did not\n"
+               "outlast the machine they ran on.\n"
                % (ranges(indices), format(starts, ","), format(limit, ",")))
-    out.append("| shard | fixed-order runs at the limit (36 readings) | certified loops | seconds | pipeline | run at stop |")
+    out.append("| shard | fixed-order runs at the limit (36 readings) | certified loops | seconds | pipeline | run on (UTC) |")
     out.append("|---:|---:|---:|---:|---|---|")
     for s in shards:
         out.append("| %d | %s | %s | %s | %s | %s |" % (s.index, format(s.limit, ","), format(s.certified, ","),
                                                            format(s.seconds, ","), s.pipeline(),
-                                                           stops_text(s.stops)))
+                                                           dates_text(s.dates)))
     out.append("")
-    out.append("The traces that certified the loops, by length: %s. Up to stop 50 a run at the limit was "
-               "traced on a ladder of 4, 16, 32, 64, ... cycles until a trace certified its loop; since stop 51 "
-               "it is traced once, to where the driver found its state come back, and counted at the first of "
+    out.append("The traces that certified the loops, by length: %s. The first pipelines traced a run at the "
+               "limit on a ladder of 4, 16, 32, 64, ... cycles until a trace certified its loop; the current one "
+               "traces it once, to where the driver found its state come back, and counted at the first of "
                "those lengths that is not shorter (`conjectures.md`, \"How the program keeps this cheap\")." % and_list(
         ["%d cycles for %s" % (c, format(n, ",")) for c, n in sorted(ladder.items()) if n]))
     out.append("The fewest swaps in a loop over the shards: %s. Per reading, with the fewest in each shard "
@@ -284,7 +262,7 @@ files, 17% less CPU time where measured (`conjectures.md`).
                    "other jobs; the %d shards of the current pipeline took %s s at the median (shards %s).\n" % (
                        SHARDS, format(starts, ","), round(sum(s.seconds for s in shards) / 3600), len(current),
                        format(int(median), ","), ranges([s.index for s in current])))
-    return "\n".join(out), runs, limit, all_stops, starts
+    return "\n".join(out), runs, limit, all_dates, starts
 
 
 def check_files(files):
@@ -321,23 +299,22 @@ def main(check):
     except Disagree as e:
         sys.stderr.write("write_random12all_certified.py: %s\n" % e)
         return 1
-    body, runs, limit, stops, starts = section(shards, readings)
+    body, runs, limit, dates, starts = section(shards, readings)
     indices = ranges(s.index for s in shards)
     seconds = sum(s.seconds for s in shards)
     with open(LOOPS_MD) as f:
         loops_md = f.read()
     head = loops_md[:loops_md.index("## Set 1 under all 36 readings")]
-    head = replace_once(head, r"^# Fixed-order runs at the limit on 12 random integer points, certified \([^)]*\)",
-                        "# Fixed-order runs at the limit on 12 random integer points, certified (stops 34, 35, 43, 44 "
-                        "and %s)" % stops_text(stops), "title")
+    head = replace_once(head, r"^# Fixed-order runs at the limit on 12 random integer points, certified(?: \([^)]*\))?",
+                        "# Fixed-order runs at the limit on 12 random integer points, certified", "title")
     new_loops = head + body
     with open(CONJECTURES_MD) as f:
         conjectures = f.read()
     new_conjectures = replace_once(
         conjectures, r"\| 12 random integer points, set 1, random12all's shards [^|]*\| all 36 \|[^\n]*",
-        "| 12 random integer points, set 1, random12all's shards %s of 64 (stops %s; the stream's counts reading by "
+        "| 12 random integer points, set 1, random12all's shards %s of 64 (run %s; the stream's counts reading by "
         "reading, `certified_against_stream.py`) | all 36 | %s | %s | %s | 0 | %s s |" % (
-            indices, stops_text(stops), format(runs, ","), format(limit, ","), format(limit, ","),
+            indices, dates_text(dates), format(runs, ","), format(limit, ","), format(limit, ","),
             format(seconds, ",")), "certified table row")
     fewest = collections.Counter(r[2] for r in fewest_rows(shards, readings))
     small, rest = min(fewest), sorted(v for v in fewest if v != min(fewest))
@@ -345,10 +322,10 @@ def main(check):
         new_conjectures, r"and under all 36 readings on random12all's shards .*?`results/random12_certified_loops.md`\)",
         "and under all 36 readings on random12all's shards %s of 64 (%s of set 1; %s runs at the limit, all "
         "loops, the stream's counts reading by reading; the fewest of %d swaps under %d readings, %d to %d under the "
-        "others; stops %s, `results/random12_certified_loops.md`)" % (
+        "others; `results/random12_certified_loops.md`)" % (
             indices, ("all %s starts" if len(shards) == SHARDS else "%s starts") % format(starts, ","),
             format(limit, ","), small, fewest[small], rest[0],
-            rest[-1], stops_text(stops)), "fixed-order statement")
+            rest[-1]), "fixed-order statement")
     if check:
         return check_files(((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures)))
     write_files(((LOOPS_MD, new_loops, loops_md), (CONJECTURES_MD, new_conjectures, conjectures)))

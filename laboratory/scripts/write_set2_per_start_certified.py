@@ -34,8 +34,8 @@ CONJECTURES_MD = os.path.join(ROOT, "laboratory", "doc", "conjectures.md")
 READING = "until-destroyed,pass-over,no-swap-no-tag"
 SHARDS = 16
 STREAM_AT_LIMIT = 1154028  # the whole stream's runs at the limit (stream_topcom.md)
-# The program each shard ran with: stop 51's (c8fe566) or stop 52's (3fd5e70: the checker's
-# volumes in Gmpzf and the trace lines written by hand). A shard run with another: add it here.
+# The program each shard ran with: commit c8fe566's, or 3fd5e70's (the checker's volumes in
+# Gmpzf and the trace lines written by hand). A shard run with another: add it here.
 PROGRAM = {0: "c8fe566", 1: "c8fe566"}
 LATER_PROGRAM = "3fd5e70"
 
@@ -84,7 +84,7 @@ def section(shards, folders):
     limit = sum(s["limit"] for s in shards)
     indices = [s["index"] for s in shards]
     later = [s for s in shards if s["index"] not in PROGRAM] or shards  # the range of one program's shards
-    out = ["## Set 2 with a priority per start, shards %s of %d (since stop 52)\n" % (ranges(indices), SHARDS)]
+    out = ["## Set 2 with a priority per start, shards %s of %d\n" % (ranges(indices), SHARDS)]
     out.append("""The same reading with `--order-seeds per-start` on set 2 (seed `order_seed_of_start(2, I)`
 for the start `topcom:I`), whose stream left 1,154,028 of the 5,563,240 runs at the limit
 (`results/random12_per_start/set2.jsonl.xz`). The shards are that stream's blocks of 4096 starts
@@ -106,7 +106,7 @@ processes (the program and TOPCOM, which enumerates the whole set for each shard
 shard's seconds, beside the other lane and, at times, builds and the test suite on the 2
 cores. Both vary between shards of one program (shards %s ran with the same program, %s to %s
 CPU seconds), and not in step with that load, so they do not compare the two programs; the
-alternating measurement in `conjectures.md` ("Stop 52 made the two halves ...") does.
+alternating measurement in `conjectures.md` ("The checker's volumes in `Gmpzf` ...") does.
 """ % (format(limit, ","), ranges([s["index"] for s in later]), format(round(min(s["user"] for s in later)), ","),
        format(round(max(s["user"] for s in later)), ",")))
     out.append("| shard | runs | at the limit | certified loops | fewest swaps (first start, its priority seed) "
@@ -156,31 +156,31 @@ def main(check):
     with open(CONJECTURES_MD) as f:
         conjectures = f.read()
     done = len(shards) == SHARDS and limit == STREAM_AT_LIMIT
-    sentence = ("Set 2's per-start runs at the limit (1,154,028) are %s (since stop 52; shards %s of 16 in "
+    sentence = ("Set 2's per-start runs at the limit (1,154,028) are %s (shards %s of 16 in "
                 "blocks of 4096, %s runs at the limit, the stream's counts block for block; "
                 "`results/random12_certified_loops.md`)." % (
                     "all certified loops" if done else "certified loops in the shards done so far",
                     ranges([s["index"] for s in shards]), format(limit, ",")))
     new_conjectures, n = re.subn(r"Set 2's per-start runs at the limit \(1,154,028\) "
                                  r"(?:are not all certified yet\.|"
-                                 r"are [^(]*\(since stop 52; .*?`results/random12_certified_loops\.md`\)\.)",
+                                 r"are [^(]*\(shards .*?`results/random12_certified_loops\.md`\)\.)",
                                  lambda m: sentence, conjectures)
     runs = sum(s["runs"] for s in shards)
     seconds = summed_seconds(body)
-    row = ("| 12 random integer points, set 2, a priority per start, shards %s of 16 (since stop 52; the stream's "
+    row = ("| 12 random integer points, set 2, a priority per start, shards %s of 16 (the stream's "
            "counts block for block, `certified_against_stream.py --batches`) | the package's "
            "| %s | %s | %s | 0 | %s s |"
            % (ranges([s["index"] for s in shards]), format(runs, ","), format(limit, ","), format(limit, ","),
               format(seconds, ",")))
-    set1_row = re.escape("| 12 random integer points, set 1, a priority per start, in 6 shards (stops 44 and 45) |") + \
+    set1_row = r"\| 12 random integer points, set 1, a priority per start, in 6 shards \|" + \
         r"[^\n]*\n"
     set2_row = r"\| 12 random integer points, set 2, a priority per start[^\n]*\n"
     new_conjectures, m = re.subn(r"(%s)(?:%s)?" % (set1_row, set2_row), lambda g: g.group(1) + row + "\n",
                                  new_conjectures)
     statement = ("set 2's %s too" % format(limit, ",") if done else
                  "set 2's in shards %s of 16 so far: %s" % (ranges([s["index"] for s in shards]), format(limit, ",")))
-    new_conjectures, k = re.subn(r"set 1's 285,508 too, stop 45(?:; set 2's[^)]*)?\)",
-                                 lambda g: "set 1's 285,508 too, stop 45; %s, since stop 52)" % statement,
+    new_conjectures, k = re.subn(r"set 1's 285,508 too(?:; set 2's[^)]*)?\)",
+                                 lambda g: "set 1's 285,508 too; %s)" % statement,
                                  new_conjectures)
     if (n, m, k) != (1, 1, 1):
         sys.stderr.write("write_set2_per_start_certified.py: conjectures.md has the sentence, the table row and the "

@@ -2,6 +2,7 @@
 """write_all_readings_certified.py puts a set's row and statement into conjectures.md the first
 time (set 2 before set 3), replaces them afterwards, says "all N starts" once every shard is in,
 and refuses a page that has neither set's."""
+import datetime
 import os
 import re
 import sys
@@ -12,7 +13,7 @@ import write_all_readings_certified as writer  # noqa: E402
 
 
 def facts(indices, starts):
-    return dict(indices=indices, starts=starts, limit=7 * starts, seconds=1234.4, stops=[56], total=5563240,
+    return dict(indices=indices, starts=starts, limit=7 * starts, seconds=1234.4, dates=[datetime.date(2026, 12, 4)], total=5563240,
                 fewest="4 under 36 readings")
 
 
@@ -37,7 +38,7 @@ def main():
     assert row2 < row3 and clause2 < clause3, "set 2's parts are not before set 3's"
     assert first[row2:row3].count("\n") == 1, "set 2's row is not the line before set 3's"
     assert "set 2's shard 0 of 64 (20,480 of its 5,563,240 starts; 143,360 runs at the limit" in first
-    assert "| 12 random integer points, set 2, under all 36 readings, shard 0 of 64 (stop 56;" in first
+    assert "| 12 random integer points, set 2, under all 36 readings, shard 0 of 64 (run 2026-12-04;" in first
     assert first.replace(first[row2:row3], "").replace(first[clause2:clause3], "") == page, "more than set 2 changed"
 
     second = writer.conjectures_text(first, 2, facts([0, 1, 2], 61440))
