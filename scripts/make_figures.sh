@@ -33,3 +33,4 @@ $E refine "$D/ts.mesh" --by gradient --field flow-speed --sites 0 -o "$D/ts0.vtu
 $E refine "$D/ts1.mesh" --by gradient --field flow-speed --sites 2000,4000,5000 -o "$D/ts2.vtu" --history "$D/fig12.csv"
 /usr/bin/python3 doc/Edge_swapping_3/plot_figures.py "$D" doc/Edge_swapping_3/figures
 cp "$D/fig13.csv" "$D/fig12.csv" doc/Edge_swapping_3/figures/
+/usr/bin/python3 scripts/compact_png.py doc/Edge_swapping_3/figures/*.png

@@ -45,3 +45,4 @@ $E optimize "$D/stuck9.node" --start placing:input --criterion delaunay --seed 6
 $E optimize "$D/cycle8.ele" --helper --order storage --max-cycles 300 -o "$D/cycle8_end.ele"
 /usr/bin/python3 laboratory/doc/plot_cases.py laboratory/doc/figures/smallest_cases.png \
   "Plain swapping stuck (Joe's phenomenon)" "$D/stuck9_end" "Helper strategy in storage order, cycle 300 (still swapping)" "$D/cycle8_end"
+/usr/bin/python3 scripts/compact_png.py laboratory/doc/figures/*.png
