@@ -2,9 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # README command 2: install what is missing, build what the tests need in
 # Release, run the test suite (every test but those labelled `extended`).
-#   --extended   also build the examples, the benchmarks and the laboratory,
-#                and run the tests labelled `extended` (the laboratory's
-#                pipelines, headers compiled alone, install, examples).
+#   --extended   also build the examples, the benchmarks, the laboratory and
+#                the tests of CGAL's domain meshes, and run the tests labelled
+#                `extended` (the laboratory, headers compiled alone, install,
+#                examples, CGAL's domain meshes).
 # Prints the seconds each step took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,7 +23,8 @@ step() { # NAME COMMAND...: runs it and says how long it took
 }
 step "installing what is missing" bash scripts/install_dependencies.sh
 step "configuring" cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEDGE_SWAPPING_3_BUILD_EXAMPLES=$extended \
-  -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=$extended -DEDGE_SWAPPING_3_BUILD_LABORATORY=$extended
+  -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=$extended -DEDGE_SWAPPING_3_BUILD_LABORATORY=$extended \
+  -DEDGE_SWAPPING_3_BUILD_EXTENDED_TESTS=$extended
 step "building" cmake --build build -j "$(nproc)"
 if [ $extended = ON ]; then
   step "the extended tests" ctest --test-dir build --output-on-failure -j "$(nproc)" -L extended
