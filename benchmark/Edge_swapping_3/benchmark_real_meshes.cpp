@@ -255,8 +255,9 @@ int main(int argc, char** argv)
     row("TetGen 1.5 flips (140 deg)", input, quality_peers::tetgen_optimizer(input, 1, 140));
     row("TetGen 1.5 flips + smoothing", input, quality_peers::tetgen_optimizer(input, 3, 140));
 #endif
-    row("CGAL remeshing flips (5)", input, quality_peers::cgal_remeshing(input, false, 5));
-    row("CGAL remeshing flips + smooth (5)", input, quality_peers::cgal_remeshing(input, true, 5));
+    row("CGAL remeshing flips (10)", input, quality_peers::cgal_remeshing(input, quality_peers::CGAL_FLIPS, 10));
+    row("CGAL remeshing flip + smooth (10)", input,
+        quality_peers::cgal_remeshing(input, quality_peers::CGAL_FLIPS_THEN_SMOOTHING, 10));
     row("Gmsh 4.8 optimizer", input, quality_peers::gmsh_optimizer(input, "/usr/bin/python3", GMSH_SCRIPT, dir.string()));
     program_rows(edge_swap, path, file, dir);
   }

@@ -7,9 +7,10 @@
 //    `optimizemesh` runs with the thresholds set in `tetgenbehavior` directly
 //    (the program cannot lower its 165 degree target without `-q`, which
 //    inserts points); `facet_ang_tol = 180` so that no boundary face flips.
-//  - CGAL's Tetrahedral_remeshing: its remesher's flip step alone, or flips
-//    and smoothing, each step repeated; boundaries (facets between subdomains,
-//    the hull) protected.
+//  - CGAL's Tetrahedral_remeshing: its remesher's flip step alone, or its flip
+//    and smoothing steps in the order of its own loop, repeated; or its
+//    public function as its examples call it; boundaries (facets between
+//    subdomains, the hull) protected.
 //  - Gmsh 4.8's optimizer (Debian's python3-gmsh), through a Medit file and
 //    gmsh_optimize.py: each subdomain a discrete volume, the boundary
 //    triangles a discrete surface.
@@ -26,7 +27,9 @@
 #include <array>
 #include <cstdlib>
 #include <fstream>
+#include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 #ifdef EDGE_SWAPPING_3_WITH_TETGEN
@@ -72,7 +75,7 @@ Cell_mesh cell_mesh_of(const Tr& tr, const std::vector<K::Point_3>& points, cons
 }
 
 /// The triangles kept fixed by every optimizer: facets between two
-/// subdomains, or on the hull, as sorted point triples.
+/// subdomains, or on the hull, as sorted index triples.
 inline std::vector<std::array<std::size_t, 3>> boundary_triangles(const Cell_mesh& m)
 {
   std::map<std::array<std::size_t, 3>, std::pair<int, int>> faces; // subdomain on each side (0: none)
@@ -92,9 +95,38 @@ inline std::vector<std::array<std::size_t, 3>> boundary_triangles(const Cell_mes
   return boundary;
 }
 
-/// CGAL's Tetrahedral_remeshing: `iterations` times (with `smooth`) its
-/// smoothing step, then its flip step; boundaries protected.
-inline Peer_result cgal_remeshing(const Cell_mesh& in, bool smooth, int iterations)
+/// How CGAL's Tetrahedral_remeshing is run.
+enum Cgal_remeshing_mode
+{
+  /// its flip step alone, repeated
+  CGAL_FLIPS,
+  /// its flip step then its smoothing step, repeated: the order of its own
+  /// loop (`Adaptive_remesher::remesh`), without split and collapse
+  CGAL_FLIPS_THEN_SMOOTHING,
+  /// `tetrahedral_isotropic_remeshing` as its examples call it (default
+  /// iterations, that is one round of split, collapse, flip and smoothing and
+  /// three more of flip and smoothing), the boundaries protected
+  /// (`remesh_boundaries(false)`) and the input's mean edge length as target:
+  /// it adds and removes vertices
+  CGAL_ISOTROPIC_REMESHING
+};
+
+/// The mean length of the edges of the cells of `m`.
+inline double mean_edge_length(const Cell_mesh& m)
+{
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+  for(const auto& t : m.cells)
+    for(int i = 0; i < 4; ++i)
+      for(int j = i + 1; j < 4; ++j) edges.insert(std::minmax(t[i], t[j]));
+  double sum = 0;
+  for(const auto& [a, b] : edges) sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(m.points[a], m.points[b])));
+  return edges.empty() ? 0 : sum / double(edges.size());
+}
+
+/// CGAL's Tetrahedral_remeshing on `in` (`mode`; `passes` for the first two
+/// modes); boundaries protected. The points of the result are those its
+/// cells use, the input's first, in their order, then those it added.
+inline Peer_result cgal_remeshing(const Cell_mesh& in, Cgal_remeshing_mode mode, int passes)
 {
   typedef CGAL::Tetrahedral_remeshing::Remeshing_triangulation_3<K> Tr;
   typedef std::pair<Tr::Vertex_handle, Tr::Vertex_handle> Edge_vv;
@@ -138,41 +170,68 @@ inline Peer_result cgal_remeshing(const Cell_mesh& in, bool smooth, int iteratio
 
   CGAL::Real_timer timer;
   timer.start();
-  Visitor visitor;
-  // The sizing is read by split and collapse only, which are not called.
-  Remesher remesher(tr, Sizing(1.0), true, No_edge(), No_facet(), false, All_cells(), visitor);
-  // Smoothing first: the flips after it repair the slivers it makes (the
-  // other order, ending on a smoothing step, left 130 tetrahedra below 10
-  // degrees on the two-spheres mesh).
-  for(int k = 0; k < iterations; ++k)
+  if(mode == CGAL_ISOTROPIC_REMESHING)
+    CGAL::tetrahedral_isotropic_remeshing(tr, mean_edge_length(in), CGAL::parameters::remesh_boundaries(false));
+  else
   {
-    if(smooth) remesher.smooth();
-    remesher.flip();
+    Visitor visitor;
+    // The sizing is read by split and collapse only, which are not called.
+    Remesher remesher(tr, Sizing(1.0), true, No_edge(), No_facet(), false, All_cells(), visitor);
+    for(int k = 0; k < passes; ++k)
+    {
+      remesher.flip();
+      if(mode == CGAL_FLIPS_THEN_SMOOTHING) remesher.smooth();
+    }
+    remesher.finalize();
   }
-  remesher.finalize();
   r.seconds = timer.time();
 
-  std::vector<K::Point_3> points(all_points.size());
-  for(const auto& [v, k] : index)
+  // The input's vertices keep their numbers (moved or not); the vertices the
+  // remesher made follow.
+  std::vector<K::Point_3> points = all_points;
+  std::map<Tr::Vertex_handle, std::size_t> number;
+  for(const auto v : tr.finite_vertex_handles())
   {
-    points[k] = v->point();
-    r.moved += (points[k] != all_points[k]);
+    const auto at = index.find(v);
+    if(at == index.end())
+    {
+      number[v] = points.size();
+      points.push_back(v->point());
+      continue;
+    }
+    number[v] = at->second;
+    points[at->second] = v->point();
+    r.moved += (v->point() != all_points[at->second]);
   }
-  r.mesh = cell_mesh_of(tr, points, [&](Tr::Vertex_handle v) { return index.at(v); },
+  r.mesh = cell_mesh_of(tr, points, [&](Tr::Vertex_handle v) { return number.at(v); },
                         [](Tr::Cell_handle c) { return int(c->subdomain_index()); });
-  if(all_points.size() > in.points.size())
+  // The domain's cells alone (the filled outside is subdomain 0).
+  Cell_mesh domain;
+  domain.points = std::move(r.mesh.points);
+  for(std::size_t k = 0; k < r.mesh.cells.size(); ++k)
+    if(r.mesh.subdomains[k] != 0 || all_points.size() == in.points.size())
+    {
+      domain.cells.push_back(r.mesh.cells[k]);
+      domain.subdomains.push_back(r.mesh.subdomains[k]);
+    }
+  // The points no cell uses (those the remesher removed, and a filled
+  // outside's) left out, the others renumbered in order.
+  std::vector<std::size_t> renumbered(domain.points.size(), 0);
+  for(const auto& t : domain.cells)
+    for(std::size_t v : t) renumbered[v] = 1;
+  r.mesh = Cell_mesh();
+  for(std::size_t k = 0; k < renumbered.size(); ++k)
+    if(renumbered[k] != 0)
+    {
+      renumbered[k] = r.mesh.points.size();
+      r.mesh.points.push_back(domain.points[k]);
+    }
+  for(auto t : domain.cells)
   {
-    // The domain's cells alone, on the input's points.
-    Cell_mesh domain;
-    domain.points.assign(r.mesh.points.begin(), r.mesh.points.begin() + std::ptrdiff_t(in.points.size()));
-    for(std::size_t k = 0; k < r.mesh.cells.size(); ++k)
-      if(r.mesh.subdomains[k] != 0)
-      {
-        domain.cells.push_back(r.mesh.cells[k]);
-        domain.subdomains.push_back(r.mesh.subdomains[k]);
-      }
-    r.mesh = std::move(domain);
+    for(auto& v : t) v = renumbered[v];
+    r.mesh.cells.push_back(t);
   }
+  r.mesh.subdomains = std::move(domain.subdomains);
   return r;
 }
 

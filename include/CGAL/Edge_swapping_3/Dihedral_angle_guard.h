@@ -23,12 +23,11 @@ namespace Edge_swapping_3 {
 
 namespace internal {
 
-// The smallest and largest cosine of the dihedral angles of `abcd`,
-// computed on the four points in lexicographic order: the same four points
-// give the same values whatever their order in a cell, so a tetrahedron that
-// passed the guard when it was made passes it whenever it is measured again.
+// The four points in lexicographic order: the same four points give the
+// same values whatever their order in a cell, so a tetrahedron that passed
+// the guard when it was made passes it whenever it is measured again.
 template <class P>
-std::pair<double, double> dihedral_cosine_extremes(const P& a, const P& b, const P& c, const P& d)
+std::array<const P*, 4> in_lexicographic_order(const P& a, const P& b, const P& c, const P& d)
 {
   std::array<const P*, 4> p = {&a, &b, &c, &d};
   auto less = [](const P* u, const P* v) {
@@ -39,9 +38,52 @@ std::pair<double, double> dihedral_cosine_extremes(const P& a, const P& b, const
     return CGAL::to_double(u->z()) < CGAL::to_double(v->z());
   };
   std::sort(p.begin(), p.end(), less);
+  return p;
+}
+
+// The smallest and largest cosine of the dihedral angles of `abcd`,
+// computed on the four points in lexicographic order.
+template <class P>
+std::pair<double, double> dihedral_cosine_extremes(const P& a, const P& b, const P& c, const P& d)
+{
+  const auto p = in_lexicographic_order(a, b, c, d);
   const auto cosines = dihedral_cosines(*p[0], *p[1], *p[2], *p[3]);
   const auto [lo, hi] = std::minmax_element(cosines.begin(), cosines.end());
   return {*lo, *hi};
+}
+
+// The same extremes, and `minimum_dihedral_sine` of the points in that
+// order, from the same face normals: the guarded dihedral sine at the cost
+// of one measure.
+template <class P>
+std::array<double, 3> dihedral_cosine_extremes_and_minimum_sine(const P& a, const P& b, const P& c, const P& d)
+{
+  const auto p = in_lexicographic_order(a, b, c, d);
+  const auto v = to_vecs(*p[0], *p[1], *p[2], *p[3]);
+  // The normals of minimum_dihedral_sine (the face opposite vertex k); the
+  // cosines want them outward, and their sign changes no sine.
+  std::array<Vec, 4> n;
+  std::array<double, 4> lengths, outward;
+  for(int k = 0; k < 4; ++k)
+  {
+    const Vec& o = v[(k + 1) & 3];
+    n[k] = cross(sub(v[(k + 2) & 3], o), sub(v[(k + 3) & 3], o));
+    lengths[k] = norm(n[k]);
+    outward[k] = dot(n[k], sub(v[k], o)) > 0 ? -1.0 : 1.0;
+  }
+  double lo = 1, hi = -1, smallest = HUGE_VAL;
+  for(int k = 0; k < 4; ++k)
+    for(int l = k + 1; l < 4; ++l)
+    {
+      const double length = lengths[k] * lengths[l];
+      const double c = length > 0 ? -(outward[k] * outward[l]) * dot(n[k], n[l]) / length : 1.0;
+      const double cosine = std::isfinite(c) ? (std::max)(-1.0, (std::min)(1.0, c)) : 1.0;
+      lo = (std::min)(lo, cosine);
+      hi = (std::max)(hi, cosine);
+      const double s = length > 0 ? norm(cross(n[k], n[l])) / length : 0.0;
+      smallest = (std::min)(smallest, std::isfinite(s) ? s : 0.0);
+    }
+  return {lo, hi, smallest / (2 * std::sqrt(2.0) / 3)};
 }
 
 } // namespace internal
@@ -106,6 +148,11 @@ struct Dihedral_angle_guarded
   template <class P>
   double operator()(const P& a, const P& b, const P& c, const P& d) const
   {
+    if constexpr(std::is_same<Measure, Minimum_dihedral_sine>::value)
+    {
+      const auto [lo, hi, sine] = internal::dihedral_cosine_extremes_and_minimum_sine(a, b, c, d);
+      return range.contains_cosines(lo, hi) ? sine : -HUGE_VAL;
+    }
     const auto [lo, hi] = internal::dihedral_cosine_extremes(a, b, c, d);
     if(!range.contains_cosines(lo, hi)) return larger_is_worse ? HUGE_VAL : -HUGE_VAL;
     // The extreme angles from the cosines just computed.

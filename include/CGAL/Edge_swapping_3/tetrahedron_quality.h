@@ -167,11 +167,13 @@ double minimum_dihedral_sine(const Point& p0, const Point& p1, const Point& p2, 
   std::array<Vec, 4> n;
   for(int k = 0; k < 4; ++k)
     n[k] = cross(sub(v[(k + 2) & 3], v[(k + 1) & 3]), sub(v[(k + 3) & 3], v[(k + 1) & 3]));
+  std::array<double, 4> lengths;
+  for(int k = 0; k < 4; ++k) lengths[k] = norm(n[k]);
   double smallest = HUGE_VAL;
   for(int k = 0; k < 4; ++k)
     for(int l = k + 1; l < 4; ++l)
     {
-      const double length = norm(n[k]) * norm(n[l]);
+      const double length = lengths[k] * lengths[l];
       const double s = length > 0 ? norm(cross(n[k], n[l])) / length : 0.0;
       smallest = (std::min)(smallest, std::isfinite(s) ? s : 0.0);
     }
