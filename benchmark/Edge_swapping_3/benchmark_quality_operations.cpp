@@ -6,8 +6,9 @@
 // placing triangulation of 8,000 random points (the hull fixed). Rows: the
 // input, the flip driver (`swap_edges`, MinMax), the worst-first driver
 // (`improve_worst_tetrahedra`) for MinMax with each set of operations, two
-// rows with a quality target, then with the topological operations, and
-// with smoothing too, for MaxMin, the radius ratio, the dihedral sine and the
+// rows with a quality target, then with the topological operations, with
+// smoothing too, and with smoothing on flat boundary faces and straight
+// boundary edges, for MaxMin, the radius ratio, the dihedral sine and the
 // volume-length ratio; then TetGen's optimizer, CGAL's remeshing and Gmsh's
 // optimizer. Columns: smallest and largest dihedral angle, cells below 10
 // and above 165 and 175 degrees, the same first two counts on the cells with
@@ -69,9 +70,21 @@ void set_boundary_points(const quality_peers::Cell_mesh& input)
     for(std::size_t v : t) boundary_points.insert(input.points[v]);
 }
 
+// The vertices of `tr` at a point of the input's boundary: taken before an
+// optimizer of ours runs (ours may move them within flat boundary faces), or
+// on a peer's output (the peers keep them where they are).
+std::set<Triangulation::Vertex_handle> boundary_vertices(const Triangulation& tr)
+{
+  std::set<Triangulation::Vertex_handle> on;
+  for(auto v : tr.finite_vertex_handles())
+    if(boundary_points.count(v->point())) on.insert(v);
+  return on;
+}
+
 // The quality of the cells `counted` selects, and of those of them with no
-// vertex on the boundary.
-Quality_row quality(const Triangulation& tr, const Cell_filter& counted)
+// vertex in `boundary`.
+Quality_row quality(const Triangulation& tr, const Cell_filter& counted,
+                    const std::set<Triangulation::Vertex_handle>& boundary)
 {
   Quality_row q;
   std::vector<double> ratios;
@@ -91,7 +104,7 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted)
     q.above_165 += hi > 165;
     q.above_175 += hi > 175;
     bool interior = true;
-    for(int i = 0; i < 4; ++i) interior = interior && !boundary_points.count(c->vertex(i)->point());
+    for(int i = 0; i < 4; ++i) interior = interior && !boundary.count(c->vertex(i));
     q.interior_below_10 += interior && lo < 10;
     q.interior_above_165 += interior && hi > 165;
     ratios.push_back(3 / ES::circumradius_over_inradius(p0, p1, p2, p3));
@@ -163,7 +176,7 @@ void peer_row(const char* name, const std::function<quality_peers::Peer_result()
     return triangles;
   };
   const bool kept = by_points(r.mesh) == by_points(input);
-  print(name, quality(tr, counted(tr)), r.seconds,
+  print(name, quality(tr, counted(tr), boundary_vertices(tr)), r.seconds,
         std::to_string(r.moved) + " points moved, boundary " + (kept ? "kept" : "CHANGED"));
 }
 
@@ -179,15 +192,17 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
   {
     Triangulation tr;
     make(tr);
-    print("input", quality(tr, counted(tr)), 0, "");
+    const auto boundary = boundary_vertices(tr);
+    print("input", quality(tr, counted(tr), boundary), 0, "");
   }
   if(selected("swap_edges MinMax (flips)"))
   {
     Triangulation tr;
     make(tr);
+    const auto boundary = boundary_vertices(tr);
     const auto r = CGAL::swap_edges(tr, ES::Min_max_dihedral_angle_criterion(), ES::parameters::mesh_constraints(constraints));
     const auto s = r.total_swaps();
-    print("swap_edges MinMax (flips)", quality(tr, counted(tr)), r.seconds,
+    print("swap_edges MinMax (flips)", quality(tr, counted(tr), boundary), r.seconds,
           std::to_string(s[0]) + " 2-3, " + std::to_string(s[1]) + " 3-2, " + std::to_string(s[2] + s[3]) + " 4-4/2-2");
   }
   const std::pair<const char*, unsigned> variants[] = {
@@ -203,23 +218,29 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
     if(!selected(std::string("worst first MinMax, ") + name)) continue;
     Triangulation tr;
     make(tr);
+    const auto boundary = boundary_vertices(tr);
     const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
     const auto r = ES::improve_worst_tetrahedra(tr, ES::Min_max_dihedral_angle_criterion(), np);
-    print((std::string("worst first MinMax, ") + name).c_str(), quality(tr, counted(tr)), r.seconds,
+    print((std::string("worst first MinMax, ") + name).c_str(), quality(tr, counted(tr), boundary), r.seconds,
           operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
   }
   // The other measures, with the topological operations, then with smoothing.
   auto other = [&](const auto& criterion, const char* measure) {
-    for(const unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
+    for(const unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS),
+                                     unsigned(ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING)})
     {
       const std::string row = std::string("worst first ") + measure +
-                              (operations == ES::ALL_OPERATIONS ? ", topological + smoothing" : ", topological");
+                              (operations == ES::TOPOLOGICAL_OPERATIONS ? ", topological"
+                               : operations == ES::ALL_OPERATIONS      ? ", topological + smoothing"
+                                                                       : ", topological + boundary smoothing");
       if(!selected(row)) continue;
       Triangulation tr;
       make(tr);
+      const auto boundary = boundary_vertices(tr);
+    const auto boundary = boundary_vertices(tr);
       const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
       const auto r = ES::improve_worst_tetrahedra(tr, criterion, np);
-      print(row.c_str(), quality(tr, counted(tr)), r.seconds,
+      print(row.c_str(), quality(tr, counted(tr), boundary), r.seconds,
             operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
     }
   };
@@ -229,10 +250,11 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
     if(!selected(row)) return;
     Triangulation tr;
     make(tr);
+    const auto boundary = boundary_vertices(tr);
     const auto np = ES::parameters::quality_target(
         target, ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints)));
     const auto r = ES::improve_worst_tetrahedra(tr, criterion, np);
-    print(row.c_str(), quality(tr, counted(tr)), r.seconds,
+    print(row.c_str(), quality(tr, counted(tr), boundary), r.seconds,
           operations_of(r) + " (" + std::to_string(moved_vertices(tr, input)) + " points moved)");
   };
   targeted(ES::Min_max_dihedral_angle_criterion(), ES::TOPOLOGICAL_OPERATIONS, 140,

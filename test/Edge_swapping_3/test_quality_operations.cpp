@@ -1167,6 +1167,77 @@ TEST_CASE("Vertex smoothing moves an interior vertex to the best place of its st
   REQUIRE(corner->point() == Point(1, 0, 0));
 }
 
+TEST_CASE("Smoothing on the boundary moves vertices within flat faces and along straight edges - the boundary keeps "
+          "its shape", "[smoothing][boundary smoothing]")
+{
+  // The unit cube's corners, points on its faces and edges, and points
+  // inside: its Delaunay triangulation's hull is the cube. A vertex on a face
+  // may slide within it, one on an edge along it; a corner stays.
+  const unsigned seed = 47;
+  INFO("seed " << seed);
+  CGAL::Random random(seed);
+  std::vector<Point> points = random_in_cube(300, seed);
+  for(int k = 0; k < 8; ++k) points.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  auto draw = [&](int fixed, double side, double other) {
+    std::array<double, 3> x = {random.get_double(0.05, 0.95), random.get_double(0.05, 0.95),
+                               random.get_double(0.05, 0.95)};
+    x[fixed] = side;
+    if(other >= 0) x[(fixed + 1) % 3] = other;
+    return Point(x[0], x[1], x[2]);
+  };
+  for(int k = 0; k < 150; ++k) points.push_back(draw(k % 3, (k / 3) % 2, -1));
+  for(int k = 0; k < 48; ++k) points.push_back(draw(k % 3, (k / 3) % 2, (k / 6) % 2));
+  // How many coordinates put p on the cube's boundary.
+  auto on_sides = [](const Point& p) {
+    int n = 0;
+    for(int a = 0; a < 3; ++a) n += (p[a] == 0 || p[a] == 1);
+    return n;
+  };
+  Tr tr;
+  ES::insert_delaunay(tr, points);
+  const auto volume = exact_volume(tr);
+  std::map<Tr::Vertex_handle, Point> before;
+  for(auto v : tr.finite_vertex_handles()) before[v] = v->point();
+  const ES::Max_min_dihedral_sine_criterion criterion;
+  const auto r = ES::improve_worst_tetrahedra(
+      tr, criterion, ES::parameters::operations(ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING));
+  INFO("worst " << r.worst_before << " -> " << r.worst_after << ", " << r.smoothing_moves << " moves");
+  REQUIRE(tr.is_valid(true));
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(r.worst_after >= r.worst_before);
+  std::array<std::size_t, 4> moved{}; // by the number of boundary coordinates
+  for(const auto& [v, p] : before)
+  {
+    const Point q = v->point();
+    REQUIRE(on_sides(q) == on_sides(p));
+    for(int a = 0; a < 3; ++a)
+      if(p[a] == 0 || p[a] == 1) REQUIRE(q[a] == p[a]); // the same face, the same edge
+    moved[std::size_t(on_sides(p))] += (q != p);
+  }
+  INFO("moved: " << moved[0] << " inside, " << moved[1] << " on faces, " << moved[2] << " on edges");
+  REQUIRE(moved[0] > 0);
+  REQUIRE(moved[1] > 0);
+  REQUIRE(moved[2] > 0);
+  REQUIRE(moved[3] == 0);
+
+  // Without the boundary moves no boundary vertex moves; on a hull that is
+  // nowhere flat (random points alone) none moves even with them.
+  for(const bool cube : {true, false})
+  {
+    Tr again;
+    ES::insert_delaunay(again, cube ? points : random_in_cube(300, seed));
+    std::map<Tr::Vertex_handle, Point> start;
+    for(auto v : again.finite_vertex_handles()) start[v] = v->point();
+    ES::improve_worst_tetrahedra(again, criterion,
+                                 ES::parameters::operations(cube ? unsigned(ES::ALL_OPERATIONS)
+                                                                 : unsigned(ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING)));
+    std::set<Tr::Vertex_handle> hull;
+    again.adjacent_vertices(again.infinite_vertex(), std::inserter(hull, hull.end()));
+    for(auto v : hull) REQUIRE(v->point() == start[v]);
+  }
+}
+
 TEST_CASE("Vertex smoothing climbs past the smart Laplacian to the best place on the axis", "[smoothing]")
 {
   // An octahedron stretched upwards: the centroid of the six neighbours,

@@ -40,13 +40,15 @@ int main(int argc, char** argv)
                        "or Y.vtu")->required();
   optimize->add_option("--criterion", opt.criterion,
                        "delaunay|minmax-dihedral|maxmin-dihedral|min-edges|aspect-ratio (circumradius/inradius)|"
-                       "edge-ratio (longest/shortest edge)|radius-ratio (3r/R)|dihedral-sine|volume-length")
+                       "edge-ratio (longest/shortest edge)|radius-ratio (3r/R)|dihedral-sine|volume-length "
+                       "(default: dihedral-sine for a mesh; delaunay for a .node point set, and with --helper or --paper)")
       ->check(CLI::IsMember({"delaunay", "minmax-dihedral", "maxmin-dihedral", "min-edges", "aspect-ratio", "edge-ratio",
                              "radius-ratio", "dihedral-sine", "volume-length"}));
   optimize->add_option("--operations", opt.operations,
                        "quality criteria: the worst-first driver's operations, comma-separated: flips, edge-removal, "
-                       "multi-face-removal, two-step-edge-removal, smoothing (moves interior points), topological (all but "
-                       "smoothing), all "
+                       "multi-face-removal, two-step-edge-removal, smoothing (moves interior points), boundary-smoothing "
+                       "(smoothing that also moves points within flat boundary faces and along straight boundary "
+                       "edges), topological (all but smoothing), all (all but boundary-smoothing) "
                        "(default); or paper-flips: the paper's driver (rounds over every facet)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "start of a point set: placing|placing:input|delaunay|scramble:K (default: delaunay with a quality "

@@ -20,7 +20,8 @@ namespace edge_swap {
 
 struct Optimize_options
 {
-  std::string input, output, criterion = "delaunay", start = "placing", order;
+  std::string input, output, start = "placing", order;
+  std::string criterion; ///< empty: `default_criterion()`
   std::string perturb = "cgal", history, stats, schedule = "queue";
   std::string reading; ///< the helper's reading of Algorithm 4 (empty: the package's)
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
@@ -89,13 +90,14 @@ inline unsigned quality_operations(const std::string& list)
     else if(name == "multi-face-removal") bits |= ES::MULTI_FACE_REMOVAL;
     else if(name == "two-step-edge-removal") bits |= ES::TWO_STEP_EDGE_REMOVAL;
     else if(name == "smoothing") bits |= ES::SMOOTHING;
+    else if(name == "boundary-smoothing") bits |= ES::SMOOTHING | ES::BOUNDARY_SMOOTHING;
     else if(name == "topological") bits |= ES::TOPOLOGICAL_OPERATIONS;
     else if(name == "all") bits |= ES::ALL_OPERATIONS;
     else if(name == "paper-flips") bits |= paper_flips;
     else
       throw Usage_error("--operations: unknown operation '" + name +
-                        "' (flips, edge-removal, multi-face-removal, two-step-edge-removal, smoothing, topological, "
-                        "all, paper-flips)");
+                        "' (flips, edge-removal, multi-face-removal, two-step-edge-removal, smoothing, "
+                        "boundary-smoothing, topological, all, paper-flips)");
     begin = end + 1;
   }
   if((bits & paper_flips) && bits != paper_flips)
@@ -171,8 +173,24 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
   return 0;
 }
 
-inline int run_optimize(const Optimize_options& o)
+/// The criterion of `optimize` when `--criterion` is not given: the
+/// Delaunay criterion for a point set (the paper's construction) and for
+/// --helper and --paper, which are its; for a mesh, the dihedral sine with
+/// every operation, the best two-sided result of the quality benchmark
+/// (doc/Edge_swapping_3/benchmarks.md, "Quality operations").
+inline std::string default_criterion(const Optimize_options& o)
 {
+  return (IO::has_extension(o.input, ".node") || o.helper || o.paper) ? "delaunay" : "dihedral-sine";
+}
+
+inline int run_optimize(const Optimize_options& given)
+{
+  Optimize_options o = given;
+  const bool criterion_given = !o.criterion.empty();
+  if(!criterion_given) o.criterion = default_criterion(o);
+  // Said when an option of the flip driver meets a mesh's default criterion.
+  const std::string defaulted =
+      criterion_given ? "" : " (a mesh's default criterion is dihedral-sine: add --criterion delaunay for the flip driver)";
   // Every option is checked before any work, and nothing is written before the end.
   std::vector<std::string> outputs = mesh_output_paths(o.output);
   outputs.push_back(o.history);
@@ -218,7 +236,7 @@ inline int run_optimize(const Optimize_options& o)
   if(operations == paper_flips) operations = 0;
   if(operations != 0 && !o.history.empty())
     throw Usage_error("--history records rounds, which the worst-first driver (--operations " + options.operations +
-                      ") has not; --operations paper-flips has them");
+                      ") has not; --operations paper-flips has them" + defaulted);
   if(o.quality_target_given && operations == 0)
     throw Usage_error("--quality-target sets the worst-first driver (a quality --criterion, --operations other than "
                       "paper-flips)");
@@ -229,7 +247,7 @@ inline int run_optimize(const Optimize_options& o)
     throw Usage_error("--quality-target must be a finite number");
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
-                      "worst-first driver (--operations " + options.operations + ")");
+                      "worst-first driver (--operations " + options.operations + ")" + defaulted);
 
   Input in = read_input(o.input);
   Triangulation tr;

@@ -30,14 +30,23 @@ template <class P>
 std::array<const P*, 4> in_lexicographic_order(const P& a, const P& b, const P& c, const P& d)
 {
   std::array<const P*, 4> p = {&a, &b, &c, &d};
-  auto less = [](const P* u, const P* v) {
+  auto order = [](const P*& u, const P*& v) {
     const double ux = CGAL::to_double(u->x()), vx = CGAL::to_double(v->x());
-    if(ux != vx) return ux < vx;
-    const double uy = CGAL::to_double(u->y()), vy = CGAL::to_double(v->y());
-    if(uy != vy) return uy < vy;
-    return CGAL::to_double(u->z()) < CGAL::to_double(v->z());
+    bool swap = vx < ux;
+    if(ux == vx)
+    {
+      const double uy = CGAL::to_double(u->y()), vy = CGAL::to_double(v->y());
+      swap = vy < uy || (uy == vy && CGAL::to_double(v->z()) < CGAL::to_double(u->z()));
+    }
+    if(swap) std::swap(u, v);
   };
-  std::sort(p.begin(), p.end(), less);
+  // A sorting network of five comparisons (the points of a cell are distinct,
+  // so any correct sort gives this order).
+  order(p[0], p[1]);
+  order(p[2], p[3]);
+  order(p[0], p[2]);
+  order(p[1], p[3]);
+  order(p[1], p[2]);
   return p;
 }
 

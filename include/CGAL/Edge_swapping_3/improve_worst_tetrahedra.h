@@ -48,6 +48,10 @@ enum Quality_operation : unsigned
   MULTI_FACE_REMOVAL = 4, ///< multi-face removal at the cell's facets
   SMOOTHING = 8,          ///< smoothing of the cell's interior vertices (moves points)
   TWO_STEP_EDGE_REMOVAL = 16, ///< edge removal after the removal of an edge of the edge's star
+  /// smoothing that also moves vertices within flat boundary patches and along
+  /// straight boundary edges (`move_on_flat_boundary` of `smooth_vertex`);
+  /// implies `SMOOTHING`
+  BOUNDARY_SMOOTHING = 32,
   /// every operation that keeps the points
   TOPOLOGICAL_OPERATIONS = FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL | TWO_STEP_EDGE_REMOVAL,
   ALL_OPERATIONS = TOPOLOGICAL_OPERATIONS | SMOOTHING
@@ -130,7 +134,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   using CGAL::parameters::get_parameter;
   typedef typename Tr::Cell_handle Cell_handle;
   CGAL_precondition(tr.dimension() == 3);
-  const unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
+  unsigned operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
+  if(operations & BOUNDARY_SMOOTHING) operations |= SMOOTHING;
   const int maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
   const int maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), 20);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
@@ -369,7 +374,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         if(!may_move(c->vertex(i))) continue;
         star.clear();
         if(internal::smooth_vertex(tr, c->vertex(i), criterion, constraints, visitor,
-                                   internal::default_smoothing_steps, star).moved())
+                                   internal::default_smoothing_steps, star,
+                                   (operations & BOUNDARY_SMOOTHING) != 0).moved())
         {
           created = star;
           moved = true;

@@ -27,6 +27,7 @@ enum operations_t { operations };
 enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
 enum quality_target_t { quality_target };
 enum keep_dihedral_angle_range_t { keep_dihedral_angle_range };
+enum move_on_flat_boundary_t { move_on_flat_boundary };
 enum hint_t { hint };
 enum maximum_swaps_t { maximum_swaps };
 enum insertion_order_t { insertion_order };
@@ -98,6 +99,9 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(quality_target)
 /// makes a dihedral angle smaller than the smallest before the run or larger
 /// than the largest (default true).
 CGAL_EDGE_SWAPPING_3_PARAMETER(keep_dihedral_angle_range)
+/// `bool`: `smooth_vertex` may move a vertex within a flat patch or along a
+/// straight edge of the boundary (default false).
+CGAL_EDGE_SWAPPING_3_PARAMETER(move_on_flat_boundary)
 
 /// `Tr::Cell_handle`: where the walk of `insert_by_swapping` starts (default: anywhere).
 CGAL_EDGE_SWAPPING_3_PARAMETER(hint)

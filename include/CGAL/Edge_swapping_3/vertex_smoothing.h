@@ -20,6 +20,7 @@
 #define CGAL_EDGE_SWAPPING_3_VERTEX_SMOOTHING_H
 
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/internal/boundary_motion.h>
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
@@ -93,42 +94,97 @@ public:
         if(c->vertex(i) == v) index = i;
         else if(!tr.is_infinite(c->vertex(i))) p[i] = internal::bare_point(c->vertex(i)->point());
       }
-      corners_.push_back({p, index});
+      corners_.push_back({p, index, tr.is_infinite(c) ? SKIPPED : MEASURED});
     }
+  }
+
+  /// Cells outside the domain are kept positively oriented but not measured.
+  template <class Constraints>
+  void measure_only_in_domain(const Constraints& constraints)
+  {
+    for(std::size_t k = 0; k < cells_.size(); ++k)
+      if(corners_[k].role == MEASURED && !constraints.is_in_domain(tr_, cells_[k])) corners_[k].role = ORIENTED;
   }
 
   const std::vector<Cell_handle>& cells() const { return cells_; }
 
+  /// Whether cell k is measured (in the domain, finite).
+  bool is_measured(std::size_t k) const { return corners_[k].role == MEASURED; }
+
   /// The score (larger is better) of cell k with the vertex at `p`; -inf
-  /// unless the cell is positively oriented (exact predicate).
+  /// unless the cell is positively oriented (exact predicate); +inf for a
+  /// cell that is not measured.
   double score(std::size_t k, const Point& p) const
   {
+    // An infinite cell stays valid while the vertex stays on its hull facet's plane.
+    if(corners_[k].role == SKIPPED) return HUGE_VAL;
     std::array<Point, 4> q = corners_[k].points;
     q[corners_[k].index] = p;
     if(tr_.geom_traits().orientation_3_object()(q[0], q[1], q[2], q[3]) != CGAL::POSITIVE) return -HUGE_VAL;
+    if(corners_[k].role == ORIENTED) return HUGE_VAL;
     const double m = measure_(q[0], q[1], q[2], q[3]);
     return larger_is_worse ? -m : m;
   }
 
   /// The worst score over the star with the vertex at `p` (-inf: some cell
-  /// inverted), or a score at most `floor` as soon as one is found.
-  double worst(const Point& p, double floor = -HUGE_VAL) const
+  /// inverted), or a score at most `floor` as soon as one is found. The
+  /// cells are scored worst first (as they scored at the last position that
+  /// `keep_scores` kept), so a position that fails usually fails at once; when
+  /// every cell is scored, their scores are left for `keep_scores`.
+  double worst(const Point& p, double floor = -HUGE_VAL)
   {
     double w = HUGE_VAL;
-    for(std::size_t k = 0; k < corners_.size() && w > floor; ++k) w = (std::min)(w, score(k, p));
+    for(std::size_t j = 0; j < order_.size() && w > floor; ++j)
+    {
+      const std::size_t k = order_[j];
+      trial_[k] = score(k, p);
+      w = (std::min)(w, trial_[k]);
+    }
     return w;
   }
 
+  /// The worst score over the star with the vertex at `p`, every cell scored.
+  double score_all(const Point& p)
+  {
+    double w = HUGE_VAL;
+    trial_.resize(corners_.size());
+    for(std::size_t k = 0; k < corners_.size(); ++k) w = (std::min)(w, trial_[k] = score(k, p));
+    return w;
+  }
+
+  /// Keeps the scores of the last call of `worst` that scored every cell, as
+  /// those of the present position, and orders the cells by them.
+  void keep_scores()
+  {
+    scores_ = trial_;
+    if(order_.size() != scores_.size())
+    {
+      order_.resize(scores_.size());
+      for(std::size_t k = 0; k < order_.size(); ++k) order_[k] = k;
+    }
+    // A NaN (a measure that failed) counts as worst.
+    std::stable_sort(order_.begin(), order_.end(), [&](std::size_t a, std::size_t b) {
+      return scores_[a] < scores_[b] || (std::isnan(scores_[a]) && !std::isnan(scores_[b]));
+    });
+  }
+
+  /// The score of cell k at the present position (`keep_scores`).
+  double kept_score(std::size_t k) const { return scores_[k]; }
+
 private:
+  enum Role { MEASURED, ORIENTED, SKIPPED };
   struct Corners
   {
     std::array<Point, 4> points;
     int index; // of the vertex that moves
+    Role role;
   };
   const Tr& tr_;
   const Measure& measure_;
   std::vector<Cell_handle> cells_;
   std::vector<Corners> corners_;
+  std::vector<std::size_t> order_; // the cells, worst first at the present position
+  std::vector<double> trial_, scores_;
 };
 
 /// The point of least norm in the convex hull of `g` (Frank and Wolfe's
@@ -172,19 +228,26 @@ template <class Tr, class Measure, bool larger_is_worse, class Constraints, clas
 Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                const Constraints& constraints, Visitor& visitor, int maximum_steps,
-                               std::vector<typename Tr::Cell_handle>& star_cells)
+                               std::vector<typename Tr::Cell_handle>& star_cells, bool on_flat_boundary = false)
 {
   typedef typename Tr::Geom_traits::Point_3 Point;
   CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(v));
   Smoothing_report report;
-  const Vertex_star<Tr, Measure, larger_is_worse> star(tr, v, criterion.measure);
+  Vertex_star<Tr, Measure, larger_is_worse> star(tr, v, criterion.measure);
   report.star_size = int(star.cells().size());
   star_cells.insert(star_cells.end(), star.cells().begin(), star.cells().end());
-  if(!is_smoothable(tr, star.cells(), v, constraints))
+  // A vertex on the boundary moves, when asked, within a flat boundary patch
+  // or along a straight boundary edge.
+  Boundary_motion<Point> motion;
+  const bool interior = is_smoothable(tr, star.cells(), v, constraints);
+  if(!interior && on_flat_boundary) motion = boundary_motion(tr, star.cells(), v, constraints);
+  const bool on_boundary = !interior;
+  if(on_boundary && motion.kind == Boundary_motion<Point>::FIXED)
   {
     report.outcome = VERTEX_ON_BOUNDARY;
     return report;
   }
+  if(on_boundary) star.measure_only_in_domain(constraints);
 
   auto position = [](const Point& p) { return Vec{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}; };
   auto point = [](const Vec& x) { return Point(x.x, x.y, x.z); };
@@ -195,15 +258,18 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 
   const Vec start = position(internal::bare_point(v->point()));
   Vec best = start;
-  const double start_score = star.worst(internal::bare_point(v->point()));
+  const double start_score = star.score_all(internal::bare_point(v->point()));
+  star.keep_scores();
   double best_score = start_score;
   report.quality_before = measure_of(best_score);
 
-  // The neighbours: their centroid, and the scale of the steps.
+  // The neighbours in the domain: their centroid, and the scale of the steps.
   std::vector<Vec> neighbours;
-  for(auto c : star.cells())
-    for(int i = 0; i < 4; ++i)
-      if(c->vertex(i) != v) neighbours.push_back(position(internal::bare_point(c->vertex(i)->point())));
+  for(std::size_t k = 0; k < star.cells().size(); ++k)
+    if(star.is_measured(k))
+      for(int i = 0; i < 4; ++i)
+        if(star.cells()[k]->vertex(i) != v)
+          neighbours.push_back(position(internal::bare_point(star.cells()[k]->vertex(i)->point())));
   Vec centroid{0, 0, 0};
   double shortest = HUGE_VAL, total = 0;
   for(const Vec& n : neighbours)
@@ -217,11 +283,14 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   centroid = Vec{centroid.x / count, centroid.y / count, centroid.z / count};
   const double mean = total / count;
 
-  auto try_position = [&](const Vec& x) {
+  auto try_position = [&](Vec x) {
+    if(on_boundary) x = motion.project(x);
     if(!(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z))) return false;
+    if(on_boundary && !motion.holds(tr.geom_traits(), point(x))) return false;
     const double needed = bar(best_score, criterion.relative_tolerance);
     const double s = star.worst(point(x), needed);
     if(!(s > needed)) return false;
+    star.keep_scores();
     best = x;
     best_score = s;
     ++report.steps;
@@ -235,11 +304,10 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   for(int step = 0; step < maximum_steps; ++step)
   {
     gradients.clear();
-    const Point here = point(best);
     const double band = 1e-3 * std::abs(best_score);
     for(std::size_t k = 0; k < star.cells().size(); ++k)
     {
-      const double base = star.score(k, here);
+      const double base = star.kept_score(k);
       if(base > best_score + band) continue;
       // Forward differences: a step of 1e-7 of the mean edge length.
       Vec g;
@@ -247,6 +315,8 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
       bool finite = true;
       for(int axis = 0; axis < 3 && finite; ++axis)
       {
+        *component[axis] = 0;
+        if(on_boundary && motion.kept[axis]) continue; // no move there
         Vec moved = best;
         double* coordinate[3] = {&moved.x, &moved.y, &moved.z};
         *coordinate[axis] += h;
@@ -255,7 +325,7 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
         *component[axis] = (up - base) / h;
       }
       if(!finite) { gradients.clear(); break; } // a cell too flat to differentiate
-      gradients.push_back(g);
+      gradients.push_back(on_boundary ? motion.project_direction(g) : g);
     }
     if(gradients.empty()) break;
     const Vec d = least_norm_point(gradients);
@@ -292,12 +362,18 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
 /// positively oriented (exact predicate), so the triangulation stays valid
 /// and covers the same domain; the worst value must improve by a relative
 /// gain of at least 1%. Vertices on the hull, on a constrained facet, between
-/// subdomains or outside the domain are not moved. The triangulation's
-/// cells are unchanged: only the point of `v`.
+/// subdomains or outside the domain are not moved, unless
+/// `move_on_flat_boundary` allows it: then a vertex whose boundary facets
+/// lie in one plane (with one boundary reference) moves within it, and one on
+/// a straight edge of the boundary moves along it, each position exactly on
+/// the plane or the line (`internal/boundary_motion.h`), so the boundary keeps
+/// its shape. The triangulation's cells are unchanged: only the point of `v`.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{mesh_constraints} a model of `MeshConstraints_3`, default `No_constraints` \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most ascent steps after the smart Laplacian, default 20 \cgalParamNEnd
+///   \cgalParamNBegin{move_on_flat_boundary} `bool`, default false: a vertex on a flat patch or a straight edge of
+///     the boundary moves within it \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3` (`after_move`), default
 ///     `Default_replacement_visitor` \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -311,9 +387,10 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                      internal::default_smoothing_steps);
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
+  const bool on_flat_boundary = choose_parameter(get_parameter(np, internal_np::move_on_flat_boundary), false);
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> star;
-    return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star);
+    return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star, on_flat_boundary);
   });
 }
 
