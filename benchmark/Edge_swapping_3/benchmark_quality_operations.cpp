@@ -237,7 +237,6 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
       Triangulation tr;
       make(tr);
       const auto boundary = boundary_vertices(tr);
-    const auto boundary = boundary_vertices(tr);
       const auto np = ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints));
       const auto r = ES::improve_worst_tetrahedra(tr, criterion, np);
       print(row.c_str(), quality(tr, counted(tr), boundary), r.seconds,
