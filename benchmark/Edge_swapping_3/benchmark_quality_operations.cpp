@@ -18,10 +18,11 @@
 // validated (rebuilt, orientations checked) and its boundary triangles
 // compared with the input's.
 //
-//   benchmark_quality_operations [two-spheres|delaunay|placing [ROW]]
+//   benchmark_quality_operations [two-spheres|delaunay|placing [ROW [SCALE]]]
 //
 // (default: all three inputs; with ROW, only the rows whose name contains
-// it, the input's row always).
+// it, or one of the parts separated by '|', the input's row always; SCALE: the two-spheres mesh's size, default
+// 0.35, or the number of random points, default 8,000).
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>
@@ -31,6 +32,7 @@
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include "quality_peers.h"
 #include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <iterator>
 #include <map>
@@ -44,9 +46,21 @@ namespace {
 
 typedef std::function<bool(Triangulation::Cell_handle)> Cell_filter;
 
-// The rows asked for (a part of their name; empty: every row).
+// The rows asked for (parts of their names; empty: every row).
 std::string selected_rows;
-bool selected(const std::string& row) { return row.find(selected_rows) != std::string::npos; }
+// ROW may list several parts, separated by '|': a row is run when its name
+// contains one of them.
+bool selected(const std::string& row)
+{
+  std::size_t begin = 0;
+  for(;;)
+  {
+    const std::size_t end = std::min(selected_rows.find('|', begin), selected_rows.size());
+    if(row.find(selected_rows.substr(begin, end - begin)) != std::string::npos) return true;
+    if(end == selected_rows.size()) return false;
+    begin = end + 1;
+  }
+}
 
 // The runs of each CGAL row.
 constexpr int cgal_runs = 5;
@@ -329,6 +343,13 @@ int main(int argc, char** argv)
   start_benchmark(argv);
   const std::string only = argc > 1 ? argv[1] : "";
   if(argc > 2) selected_rows = argv[2];
+  // The scale: the two-spheres mesh's size, or the number of random points.
+  const double scale = argc > 3 ? std::atof(argv[3]) : 0;
+  if(argc > 3 && !(scale > 0))
+  {
+    std::fprintf(stderr, "the scale '%s' is not a positive number\n", argv[3]);
+    return 2;
+  }
   auto wanted = [&](const char* input) { return only.empty() || only == input; };
   if(!only.empty() && !wanted("two-spheres") && !wanted("delaunay") && !wanted("placing"))
   {
@@ -338,15 +359,16 @@ int main(int argc, char** argv)
   const std::string dir = (std::filesystem::temp_directory_path() / ("edge_swapping_3_quality_" + std::to_string(getpid()))).string();
   std::filesystem::create_directories(dir);
   const std::string mesh = dir + "/two_spheres.mesh";
-  run_program({EDGE_SWAP_BINARY, "mesh-domain", "two-spheres", "-o", mesh});
+  const std::string size = (scale > 0 && only == "two-spheres") ? std::string(argv[3]) : std::string("0.35");
+  run_program({EDGE_SWAP_BINARY, "mesh-domain", "two-spheres", "--size", size, "-o", mesh});
   const auto two_spheres = ES::IO::read_mesh_with_fields<K::Point_3>(mesh);
   std::filesystem::remove_all(dir);
 
   quality_peers::Cell_mesh two_spheres_cells{two_spheres.points, two_spheres.cells, two_spheres.cell_references};
   if(wanted("two-spheres"))
   {
-    std::printf("\nTwo-spheres domain mesh, flow region (subdomain 1; in: its cells with no vertex on a "
-                "boundary); boundaries and subdomains kept\n");
+    std::printf("\nTwo-spheres domain mesh of size %s, flow region (subdomain 1; in: its cells with no vertex on "
+                "a boundary); boundaries and subdomains kept\n", size.c_str());
     std::printf("(%zu boundary triangles in the file, %zu facets between subdomains or on the hull)\n",
                 two_spheres.triangles.size(), quality_peers::boundary_triangles(two_spheres_cells).size());
     rows([&](Triangulation& tr) { ES::build_numbered_mesh(tr, two_spheres); }, ES::Domain_constraints(),
@@ -356,7 +378,8 @@ int main(int argc, char** argv)
          two_spheres_cells);
   }
 
-  const auto points = random_points(8000);
+  const std::size_t n = (scale > 0 && only != "two-spheres") ? std::size_t(scale) : 8000;
+  const auto points = random_points(n);
   quality_peers::Cell_mesh delaunay, placing;
   {
     Triangulation tr;
@@ -373,8 +396,8 @@ int main(int argc, char** argv)
   for(const auto* input : {&delaunay, &placing})
   {
     if(!wanted(input == &delaunay ? "delaunay" : "placing")) continue;
-    std::printf("\n%s of 8,000 random points (in: cells with no vertex on the hull)\n",
-                input == &delaunay ? "Delaunay triangulation" : "Placing triangulation (no flip)");
+    std::printf("\n%s of %zu random points (in: cells with no vertex on the hull)\n",
+                input == &delaunay ? "Delaunay triangulation" : "Placing triangulation (no flip)", n);
     rows([&](Triangulation& tr) { build_point_set_mesh(tr, *input); }, ES::No_constraints(),
          [](const Triangulation&) { return Cell_filter([](Triangulation::Cell_handle) { return true; }); }, *input);
   }
