@@ -220,6 +220,8 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --criterion minmax-dihedral --operations smoothing,paper-flips",
        "optimize " + in + out + " --criterion dihedral-sine --history " + w.path("h.csv"),
        "optimize " + in + out + " --criterion maxmin-dihedral --order random",
+       "optimize " + in + out + " --criterion radius-ratio --max-cycles 5",
+       "optimize " + in + out + " --criterion dihedral-sine --perturb none",
        "optimize " + in + out + " --criterion radius-ratio --operations topological --schedule cycles",
        "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
        "optimize " + in + out + " --criterion min-edges --operations edge-removal",
@@ -425,7 +427,13 @@ TEST_CASE("optimize's default criterion: the dihedral sine for a mesh - Delaunay
                           {"cube.node", "placed.ele", "placed.node", "start.ele", "start.node", "better.ele",
                            "better.node", "better.mesh", "s.json", "helper.ele", "helper.node", "paper.ele",
                            "paper.node"});
-  r = w.run("optimize " + w.path("start.ele") + " --order random --criterion delaunay -o " + w.path("x.ele"));
+  require_clean_rejection(w, "optimize " + w.path("start.ele") + " --max-cycles 5 -o " + w.path("x.ele"),
+                          "add --criterion delaunay for the flip driver",
+                          {"cube.node", "placed.ele", "placed.node", "start.ele", "start.node", "better.ele",
+                           "better.node", "better.mesh", "s.json", "helper.ele", "helper.node", "paper.ele",
+                           "paper.node"});
+  r = w.run("optimize " + w.path("start.ele") + " --order random --max-cycles 5 --criterion delaunay -o " +
+            w.path("x.ele"));
   REQUIRE(r.exit_code == 0);
 }
 

@@ -59,9 +59,9 @@ int main(int argc, char** argv)
                        "never-cleared,facet-cells,no-swap (laboratory/doc/traces.md); other than the default "
                        "with --schedule cycles");
   optimize->add_option("--seed", opt.seed, "seed of every random choice");
-  optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none")
-      ->check(CLI::IsMember({"cgal", "none"}));
-  optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);
+  auto* perturb = optimize->add_option("--perturb", opt.perturb, "Delaunay tie-breaking: cgal|none")
+                      ->check(CLI::IsMember({"cgal", "none"}));
+  auto* max_cycles = optimize->add_option("--max-cycles", opt.max_cycles, "round (cycle) limit")->check(CLI::PositiveNumber);
   optimize->add_option("--schedule", opt.schedule, "queue (only what changed) or cycles (the paper's)");
   optimize->add_flag("--paper", opt.paper, "Delaunay: the paper's Algorithm 3 alone, no repair of a stuck state");
   auto* target = optimize->add_option("--quality-target", opt.quality_target,
@@ -153,6 +153,7 @@ int main(int argc, char** argv)
       opt.start_given = start->count() > 0;
       opt.quality_target_given = target->count() > 0;
       opt.angle_range_given = angle_range->count() > 0;
+      opt.flip_driver_options_given = perturb->count() > 0 || max_cycles->count() > 0;
       return run_optimize(opt);
     }
     if(*check) return run_check(check_path);

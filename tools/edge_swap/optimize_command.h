@@ -27,6 +27,7 @@ struct Optimize_options
   std::string operations; ///< the worst-first driver's operations, or paper-flips (empty: the default)
   std::string angle_range = "keep"; ///< the worst-first driver's dihedral angles: keep or free
   bool helper = false, start_given = false, paper = false, angle_range_given = false;
+  bool flip_driver_options_given = false; ///< `--perturb` or `--max-cycles`, which only the flip driver reads
   double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
   bool quality_target_given = false;
   unsigned int seed = 0;
@@ -248,6 +249,10 @@ inline int run_optimize(const Optimize_options& given)
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
                       "worst-first driver (--operations " + options.operations + ")" + defaulted);
+  if(operations != 0 && o.flip_driver_options_given)
+    throw Usage_error("--perturb and --max-cycles set the flip driver (the Delaunay and min-edges criteria, or "
+                      "--operations paper-flips), not the worst-first driver (--operations " + options.operations +
+                      ")" + defaulted);
 
   Input in = read_input(o.input);
   Triangulation tr;
