@@ -71,6 +71,7 @@ struct Quality_row
   std::size_t below_10 = 0, above_165 = 0, above_175 = 0, cells = 0;
   // The same counts on the cells with no vertex on the boundary.
   std::size_t interior_below_10 = 0, interior_above_165 = 0;
+  double interior_smallest = 180, interior_largest = 0;
 };
 
 // The points of the input's boundary triangles (facets between two
@@ -121,6 +122,11 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted,
     for(int i = 0; i < 4; ++i) interior = interior && !boundary.count(c->vertex(i));
     q.interior_below_10 += interior && lo < 10;
     q.interior_above_165 += interior && hi > 165;
+    if(interior)
+    {
+      q.interior_smallest = std::min(q.interior_smallest, lo);
+      q.interior_largest = std::max(q.interior_largest, hi);
+    }
     ratios.push_back(3 / ES::circumradius_over_inradius(p0, p1, p2, p3));
     ++q.cells;
   }
@@ -131,9 +137,10 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted,
 
 void print(const char* name, const Quality_row& q, double seconds, const std::string& operations)
 {
-  std::printf("%-44s %6.2f / %6.2f %6zu %6zu %6zu %6zu %6zu %8.4f %8zu %8.2f  %s\n", name, q.smallest, q.largest,
-              q.below_10, q.above_165, q.above_175, q.interior_below_10, q.interior_above_165,
-              q.radius_ratio_1st_percentile, q.cells, seconds, operations.c_str());
+  std::printf("%-44s %6.2f / %6.2f %6zu %6zu %6zu %6zu %6zu %8.4f %8zu %8.2f  in %6.2f / %6.2f  %s\n", name,
+              q.smallest, q.largest, q.below_10, q.above_165, q.above_175, q.interior_below_10, q.interior_above_165,
+              q.radius_ratio_1st_percentile, q.cells, seconds, q.interior_smallest, q.interior_largest,
+              operations.c_str());
   std::fflush(stdout);
 }
 
@@ -152,7 +159,11 @@ std::string operations_of(const ES::Quality_report& r)
          " two-step, " + std::to_string(r.face_removals) + " multi-face (" +
          std::to_string(r.faces_removed) + " faces), " + std::to_string(r.flips[ES::FLIP_2_3]) + " 2-3, " +
          std::to_string(r.flips[ES::FLIP_3_2]) + " 3-2, " + std::to_string(r.flips[ES::FLIP_4_4] + r.flips[ES::FLIP_2_2]) +
-         " 4-4/2-2, " + std::to_string(r.smoothing_moves) + " smoothing moves";
+         " 4-4/2-2, " + std::to_string(r.smoothing_moves) + " smoothing moves" +
+         (r.vertex_removals + r.vertex_insertions == 0
+              ? std::string()
+              : ", " + std::to_string(r.vertex_removals) + " vertices removed, " +
+                    std::to_string(r.vertex_insertions) + " inserted");
 }
 
 // A peer's result, rebuilt as our triangulation (which validates it) and
@@ -201,8 +212,8 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
           const std::function<Cell_filter(const Triangulation&)>& counted, const quality_peers::Cell_mesh& input)
 {
   set_boundary_points(input);
-  std::printf("%-44s %15s %6s %6s %6s %6s %6s %8s %8s %8s  %s\n", "optimizer", "min / max deg", "<10", ">165", ">175",
-              "in<10", "in>165", "rr 1%", "cells", "s", "operations");
+  std::printf("%-44s %15s %6s %6s %6s %6s %6s %8s %8s %8s  %18s  %s\n", "optimizer", "min / max deg", "<10", ">165",
+              ">175", "in<10", "in>165", "rr 1%", "cells", "s", "in min / max deg", "operations");
   {
     Triangulation tr;
     make(tr);
@@ -241,12 +252,15 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
   // The other measures, with the topological operations, then with smoothing.
   auto other = [&](const auto& criterion, const char* measure) {
     for(const unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS),
-                                     unsigned(ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING)})
+                                     unsigned(ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING),
+                                     unsigned(ES::ALL_WITH_VERTEX_CHANGES)})
     {
       const std::string row = std::string("worst first ") + measure +
                               (operations == ES::TOPOLOGICAL_OPERATIONS ? ", topological"
                                : operations == ES::ALL_OPERATIONS      ? ", topological + smoothing"
-                                                                       : ", topological + boundary smoothing");
+                               : operations == ES::ALL_WITH_VERTEX_CHANGES
+                                   ? ", topological + smoothing + vertex removal and insertion"
+                                   : ", topological + boundary smoothing");
       if(!selected(row)) continue;
       Triangulation tr;
       make(tr);

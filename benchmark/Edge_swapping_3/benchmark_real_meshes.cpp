@@ -121,12 +121,15 @@ quality_peers::Peer_result ours(const Mesh& mesh, const Criterion& criterion, un
   if(!r.error.empty()) return r;
   CGAL::Real_timer timer;
   timer.start();
+  Mesh numbered = mesh; // vertex insertion numbers its vertices after the points
   ES::with_mesh_constraints(tr, mesh, [&](const auto& constraints) {
-    return ES::improve_worst_tetrahedra(tr, criterion,
-                                        ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints)));
+    return ES::improve_worst_tetrahedra(
+        tr, criterion,
+        ES::parameters::operations(operations, ES::parameters::mesh_constraints(constraints,
+            CGAL::parameters::visitor(ES::Numbered_vertex_visitor<K::Point_3>(numbered)))));
   });
   r.seconds = timer.time();
-  const Mesh out = ES::numbered_mesh_snapshot(tr, mesh);
+  const Mesh out = ES::numbered_mesh_snapshot(tr, numbered);
   r.mesh = {out.points, out.cells, out.cell_references};
   return r;
 }
@@ -253,6 +256,8 @@ int main(int argc, char** argv)
     row("ours, dihedral sine, all (smoothing)", input, ours(mesh, ES::Max_min_dihedral_sine_criterion(), ES::ALL_OPERATIONS));
     row("ours, dihedral sine, all + boundary smoothing", input,
         ours(mesh, ES::Max_min_dihedral_sine_criterion(), ES::ALL_OPERATIONS | ES::BOUNDARY_SMOOTHING));
+    row("ours, dihedral sine, all + vertex removal and insertion", input,
+        ours(mesh, ES::Max_min_dihedral_sine_criterion(), ES::ALL_WITH_VERTEX_CHANGES));
 #ifdef EDGE_SWAPPING_3_WITH_TETGEN
     row("TetGen 1.5 flips (140 deg)", input, quality_peers::tetgen_optimizer(input, 1, 140));
     row("TetGen 1.5 flips + smoothing", input, quality_peers::tetgen_optimizer(input, 3, 140));

@@ -43,6 +43,8 @@
 #include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
+#include <CGAL/Edge_swapping_3/vertex_removal.h>
+#include <CGAL/Edge_swapping_3/vertex_insertion.h>
 #include <CGAL/Edge_swapping_3/improve_worst_tetrahedra.h>
 #include <CGAL/Edge_swapping_3/start_triangulations.h>
 #include <CGAL/Edge_swapping_3/point_families.h>

@@ -437,6 +437,63 @@ TEST_CASE("optimize's default criterion: the dihedral sine for a mesh - Delaunay
   REQUIRE(r.exit_code == 0);
 }
 
+TEST_CASE("optimize with vertex removal and insertion - new points get their fields - removed ones leave the output",
+          "[program][vertex insertion]")
+{
+  // A point field equal to x: linear interpolation at a new vertex gives its
+  // x again, up to rounding. Without smoothing, no old vertex moves.
+  Workdir w;
+  const unsigned seed = 19;
+  INFO("seed " << seed);
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<double>> field;
+  for(const Point& p : random_in_cube(200, seed))
+  {
+    points.push_back({p.x(), p.y(), p.z()});
+    field.push_back({p.x()});
+  }
+  {
+    std::ofstream node(w.path("cube.node"));
+    CGAL::Edge_swapping_3::IO::write_node_file(node, points, field, 1);
+  }
+  // A placing start (an arbitrary triangulation, many bad cells), kept as a mesh.
+  Run r = w.run("optimize " + w.path("cube.node") + " --criterion min-edges --max-cycles 1 -o " + w.path("start.ele"));
+  REQUIRE(r.exit_code == 0);
+  r = w.run("optimize " + w.path("start.ele") + " --operations topological,vertex-removal,vertex-insertion -o " +
+            w.path("out.ele") + " --stats " + w.path("s.json"));
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto stats = nlohmann::json::parse(Workdir::slurp(w.path("s.json")));
+  const std::size_t inserted = stats["vertex_insertions"], removed = stats["vertex_removals"];
+  REQUIRE(inserted > 0);
+  REQUIRE(removed > 0);
+  REQUIRE(stats["worst_after"].get<double>() >= stats["worst_before"].get<double>());
+  REQUIRE(r.out.find("(200 -> " + std::to_string(200 + inserted - removed) + ")") != std::string::npos);
+  REQUIRE(w.run("check " + w.path("out.ele")).exit_code == 0);
+  // The output's points: the kept ones and the new ones, each with its field.
+  std::istringstream node(Workdir::slurp(w.path("out.node")));
+  std::size_t n = 0, dimension = 0, attributes = 0, markers = 0;
+  node >> n >> dimension >> attributes >> markers;
+  REQUIRE(n == 200 + inserted - removed);
+  REQUIRE(attributes == 1);
+  std::size_t old_points = 0;
+  for(std::size_t k = 0; k < n; ++k)
+  {
+    double index = 0, x = 0, y = 0, z = 0, value = 0;
+    node >> index >> x >> y >> z >> value;
+    REQUIRE(std::abs(value - x) <= 1e-12);
+    old_points += std::find(points.begin(), points.end(), std::array<double, 3>{x, y, z}) != points.end();
+  }
+  // Removal may take inserted vertices too.
+  REQUIRE(old_points >= 200 - removed);
+  REQUIRE(n - old_points <= inserted);
+  REQUIRE(n - old_points > 0);
+  // The names of the operations are refused when misspelled.
+  require_clean_rejection(w, "optimize " + w.path("start.ele") + " --operations vertex-insertions -o " + w.path("x.ele"),
+                          "unknown operation 'vertex-insertions'",
+                          {"cube.node", "start.ele", "start.node", "out.ele", "out.node", "s.json"});
+}
+
 TEST_CASE("The demo proves equality with CGAL and prints the paper's table", "[program]")
 {
   Workdir w;

@@ -16,6 +16,8 @@
 #include <CGAL/Edge_swapping_3/multi_face_removal.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <CGAL/Edge_swapping_3/two_step_edge_removal.h>
+#include <CGAL/Edge_swapping_3/vertex_insertion.h>
+#include <CGAL/Edge_swapping_3/vertex_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
 #include <cmath>
 #include <functional>
@@ -1006,7 +1008,8 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
   const auto volumes = subdomain_volumes();
   const auto facets = constrained_facets();
   const Domain_tr start = tr;
-  for(unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
+  for(unsigned operations :
+      {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS), unsigned(ES::ALL_WITH_VERTEX_CHANGES)})
   {
     CAPTURE(operations);
     tr = start;
@@ -1025,13 +1028,21 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
     WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, "
                          << r.face_removals << " multi-face removals, "
-                         << r.smoothing_moves << " smoothing moves; worst smallest angle " << r.worst_before << " -> "
+                         << r.smoothing_moves << " smoothing moves, " << r.vertex_removals << " vertices removed, "
+                         << r.vertex_insertions << " inserted; worst smallest angle " << r.worst_before << " -> "
                          << r.worst_after);
     if(operations & ES::SMOOTHING)
     {
       REQUIRE(r.smoothing_moves > 0);
+      if(operations & ES::VERTEX_INSERTION) REQUIRE(r.vertex_insertions > 0);
+      // A second run with the vertices kept changes nothing (one with vertex
+      // insertion may insert again: the rule against inserting in a cell of
+      // inserted vertices holds within a run).
       const auto cells = cell_set(tr);
-      REQUIRE(ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), np).number_of_operations() == 0);
+      const auto again = ES::parameters::maximum_moves_per_vertex(
+          1000000, ES::parameters::operations(operations & ES::ALL_OPERATIONS,
+                                              ES::parameters::mesh_constraints(ES::Domain_constraints())));
+      REQUIRE(ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), again).number_of_operations() == 0);
       REQUIRE(cell_set(tr) == cells);
     }
   }
@@ -1347,7 +1358,7 @@ namespace {
 /// the infinite cells, on the hull, are only counted), and every move moves.
 struct Checking_visitor
 {
-  std::size_t replacements = 0, moves = 0, mismatches = 0;
+  std::size_t replacements = 0, moves = 0, insertions = 0, removals = 0, mismatches = 0;
   CGAL::Exact_rational old_volume = 0;
 
   template <class T>
@@ -1376,6 +1387,33 @@ struct Checking_visitor
     ++moves;
     if(v->point() == old_point) ++mismatches;
   }
+  // The new vertex is where its weights put it among the corners, up to rounding.
+  template <class T>
+  void after_insertion(const T& tr, typename T::Vertex_handle v, const std::array<typename T::Vertex_handle, 4>& corners,
+                       const std::array<double, 4>& weights)
+  {
+    ++insertions;
+    double sum = 0, x = 0, y = 0, z = 0, size = 0;
+    for(int k = 0; k < 4; ++k)
+    {
+      if(tr.is_infinite(corners[k]) || weights[k] < -1e-9) ++mismatches;
+      sum += weights[k];
+      x += weights[k] * corners[k]->point().x();
+      y += weights[k] * corners[k]->point().y();
+      z += weights[k] * corners[k]->point().z();
+      size = (std::max)(size, std::sqrt(CGAL::squared_distance(corners[k]->point(), corners[0]->point())));
+    }
+    if(std::abs(sum - 1) > 1e-9 || std::sqrt(CGAL::squared_distance(v->point(), Point(x, y, z))) > 1e-6 * size)
+      ++mismatches;
+  }
+  template <class T>
+  void before_removal(const T& tr, typename T::Vertex_handle v, typename T::Vertex_handle onto)
+  {
+    ++removals;
+    typename T::Cell_handle c;
+    int i = 0, j = 0;
+    if(tr.is_infinite(v) || v == onto || !tr.is_edge(v, onto, c, i, j)) ++mismatches;
+  }
 };
 
 } // namespace
@@ -1386,7 +1424,7 @@ TEST_CASE("The replacement visitor sees every operation of the quality driver - 
   const unsigned seed = 9;
   INFO("seed " << seed);
   const auto points = random_in_cube(300, seed);
-  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::ALL_OPERATIONS)})
+  for(unsigned operations : {unsigned(ES::FLIPS), unsigned(ES::ALL_OPERATIONS), unsigned(ES::ALL_WITH_VERTEX_CHANGES)})
   {
     CAPTURE(operations);
     Tr tr;
@@ -1400,9 +1438,15 @@ TEST_CASE("The replacement visitor sees every operation of the quality driver - 
     REQUIRE(r.number_of_operations() > 0);
     REQUIRE(visitor.mismatches == 0);
     // A two-step removal is two replacements.
-    REQUIRE(visitor.replacements == flips + r.edge_removals + 2 * r.two_step_removals + r.face_removals);
+    REQUIRE(visitor.replacements == flips + r.edge_removals + 2 * r.two_step_removals + r.face_removals +
+                                        r.vertex_removals + r.vertex_insertions);
     REQUIRE(visitor.moves == r.smoothing_moves);
-    if(operations == ES::ALL_OPERATIONS) REQUIRE(visitor.moves > 0);
+    REQUIRE(visitor.insertions == r.vertex_insertions);
+    REQUIRE(visitor.removals == r.vertex_removals);
+    if(operations & ES::SMOOTHING) REQUIRE(visitor.moves > 0);
+    if(operations & ES::VERTEX_INSERTION) REQUIRE(visitor.insertions > 0);
+    if(operations & ES::VERTEX_REMOVAL) REQUIRE(visitor.removals > 0);
+    REQUIRE(tr.number_of_vertices() == points.size() + r.vertex_insertions - r.vertex_removals);
   }
   SECTION("each operation alone, through std::ref")
   {
@@ -1430,6 +1474,162 @@ TEST_CASE("The replacement visitor sees every operation of the quality driver - 
     REQUIRE(visitor.mismatches == 0);
     REQUIRE(tr.is_valid());
   }
+}
+
+TEST_CASE("Vertex insertion in bad cells - a cavity filled exactly once - the worst new cell better - hull kept",
+          "[vertex insertion]")
+{
+  const unsigned seed = 21;
+  INFO("seed " << seed);
+  Tr tr;
+  ES::insert_delaunay(tr, random_in_cube(400, seed));
+  const auto volume = exact_volume(tr);
+  auto hull_points = [&]() {
+    std::vector<Point> h;
+    std::vector<Tr::Vertex_handle> around;
+    tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(around));
+    for(auto v : around) h.push_back(v->point());
+    std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+    return h;
+  };
+  const auto hull = hull_points();
+  const ES::Max_min_dihedral_sine_criterion criterion;
+  // The 40 worst cells, by their points (handles die as cells are replaced).
+  std::vector<std::pair<double, std::array<Point, 4>>> worst;
+  for(auto c : tr.finite_cell_handles())
+    worst.push_back({criterion.measure(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                       c->vertex(3)->point()),
+                     {c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point()}});
+  std::sort(worst.begin(), worst.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  worst.resize(40);
+  std::size_t inserted = 0, refused = 0;
+  Checking_visitor visitor;
+  for(const auto& [measure, p] : worst)
+  {
+    Tr::Vertex_handle v[4];
+    Tr::Cell_handle c;
+    bool found = true;
+    for(int i = 0; i < 4 && found; ++i) found = tr.is_vertex(p[i], v[i]);
+    if(!found || !tr.is_cell(v[0], v[1], v[2], v[3], c)) continue;
+    const std::size_t vertices = tr.number_of_vertices();
+    std::set<Tr::Vertex_handle> before;
+    for(auto u : tr.finite_vertex_handles()) before.insert(u);
+    const auto r = ES::insert_vertex(tr, c, criterion, CGAL::parameters::visitor(std::ref(visitor)));
+    REQUIRE(r.quality_before == measure);
+    if(!r.inserted())
+    {
+      REQUIRE(r.outcome == ES::NO_INSERTION_IMPROVEMENT);
+      REQUIRE(tr.number_of_vertices() == vertices);
+      ++refused;
+      continue;
+    }
+    ++inserted;
+    REQUIRE(tr.number_of_vertices() == vertices + 1);
+    REQUIRE(r.quality_after > r.quality_before);
+    REQUIRE(r.new_cells > r.cavity_size);
+    // The new cells are the new vertex's star, and their worst is the reported one.
+    Tr::Vertex_handle made;
+    for(auto u : tr.finite_vertex_handles())
+      if(!before.count(u)) made = u;
+    std::vector<Tr::Cell_handle> star;
+    tr.incident_cells(made, std::back_inserter(star));
+    REQUIRE(star.size() == std::size_t(r.new_cells));
+    double lowest = HUGE_VAL;
+    for(auto d : star)
+      lowest = (std::min)(lowest, criterion.measure(d->vertex(0)->point(), d->vertex(1)->point(), d->vertex(2)->point(),
+                                                    d->vertex(3)->point()));
+    REQUIRE(lowest == r.quality_after);
+  }
+  INFO(inserted << " inserted, " << refused << " refused");
+  REQUIRE(inserted > 0);
+  REQUIRE(visitor.insertions == inserted);
+  REQUIRE(visitor.mismatches == 0);
+  REQUIRE(tr.is_valid());
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(hull_points() == hull);
+  // An infinite cell is not a place for a vertex.
+  REQUIRE(ES::insert_vertex(tr, tr.infinite_cell(), criterion).outcome == ES::CELL_NOT_IN_DOMAIN);
+}
+
+TEST_CASE("Vertex removal contracts an interior vertex onto the neighbour that makes the best cells - the hull stays",
+          "[vertex removal]")
+{
+  // The octahedron, its centre and a point near the centre: the two make
+  // flat cells between them; contracting the near point onto the centre
+  // leaves the eight trirectangular cells.
+  Tr tr;
+  const Point near(0.05, 0.03, -0.02);
+  ES::insert_delaunay(tr, std::vector<Point>{Point(1, 0, 0), Point(-1, 0, 0), Point(0, 1, 0), Point(0, -1, 0),
+                                             Point(0, 0, 1), Point(0, 0, -1), Point(0, 0, 0), near});
+  Tr::Vertex_handle extra, corner;
+  REQUIRE(tr.is_vertex(near, extra));
+  REQUIRE(tr.is_vertex(Point(1, 0, 0), corner));
+  const auto volume = exact_volume(tr);
+  const ES::Max_min_dihedral_angle_criterion criterion;
+  Checking_visitor visitor;
+  REQUIRE(ES::remove_vertex(tr, corner, criterion).outcome == ES::VERTEX_NOT_REMOVABLE);
+  const auto r = ES::remove_vertex(tr, extra, criterion, CGAL::parameters::visitor(std::ref(visitor)));
+  REQUIRE(r.outcome == ES::VERTEX_REMOVED);
+  REQUIRE(r.quality_after > r.quality_before);
+  REQUIRE(std::abs(r.quality_after - std::acos(1 / std::sqrt(3.0)) * 180 / CGAL_PI) < 1e-9);
+  REQUIRE(tr.number_of_vertices() == 7);
+  REQUIRE(tr.number_of_finite_cells() == 8);
+  REQUIRE(tr.is_valid());
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(visitor.removals == 1);
+  REQUIRE(visitor.mismatches == 0);
+  // Nothing better is left: the centre stays.
+  Tr::Vertex_handle centre;
+  REQUIRE(tr.is_vertex(Point(0, 0, 0), centre));
+  REQUIRE(ES::remove_vertex(tr, centre, criterion).outcome == ES::NO_VERTEX_REMOVAL_IMPROVEMENT);
+}
+
+TEST_CASE("The quality driver with vertex changes - valid - the hull and the volume kept - never worse - off by default",
+          "[quality driver][vertex insertion][vertex removal]")
+{
+  const unsigned seed = 33;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(500, seed);
+  auto hull_points = [](const Tr& tr) {
+    std::vector<Point> h;
+    std::vector<Tr::Vertex_handle> around;
+    tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(around));
+    for(auto v : around) h.push_back(v->point());
+    std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+    return h;
+  };
+  Tr tr;
+  ES::insert_delaunay(tr, points);
+  const auto volume = exact_volume(tr);
+  const auto hull = hull_points(tr);
+  const ES::Max_min_dihedral_sine_criterion criterion;
+  Tr kept = tr;
+  const auto without = ES::improve_worst_tetrahedra(kept, criterion, ES::parameters::operations(ES::ALL_OPERATIONS));
+  REQUIRE(kept.number_of_vertices() == points.size());
+  REQUIRE(without.vertex_insertions + without.vertex_removals == 0);
+  const auto r = ES::improve_worst_tetrahedra(tr, criterion, ES::parameters::operations(ES::ALL_WITH_VERTEX_CHANGES));
+  INFO(r.vertex_insertions << " inserted, " << r.vertex_removals << " removed; worst " << r.worst_before << " -> "
+                           << r.worst_after << " (without: " << without.worst_after << ")");
+  REQUIRE(r.ending == ES::CONVERGED);
+  REQUIRE(r.vertex_insertions > 0);
+  REQUIRE(r.vertex_removals > 0);
+  REQUIRE(tr.number_of_vertices() == points.size() + r.vertex_insertions - r.vertex_removals);
+  REQUIRE(r.worst_after >= r.worst_before);
+  REQUIRE(tr.is_valid());
+  REQUIRE(every_cell_positive(tr));
+  REQUIRE(exact_volume(tr) == volume);
+  REQUIRE(hull_points(tr) == hull);
+  // No vertex came or went in a cell within the angles (30 and 140 by
+  // default): with bounds that every cell meets, none does.
+  Tr again;
+  ES::insert_delaunay(again, points);
+  const auto none = ES::improve_worst_tetrahedra(
+      again, criterion,
+      ES::parameters::vertex_change_angles(std::pair<double, double>(0, 180),
+                                           ES::parameters::operations(ES::ALL_WITH_VERTEX_CHANGES)));
+  REQUIRE(none.vertex_insertions + none.vertex_removals == 0);
 }
 
 TEST_CASE("Delaunay repair of a domain mesh whose failing facets are all constrained ends stuck on both schedules", "[drivers]")

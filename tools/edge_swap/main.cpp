@@ -48,8 +48,10 @@ int main(int argc, char** argv)
                        "quality criteria: the worst-first driver's operations, comma-separated: flips, edge-removal, "
                        "multi-face-removal, two-step-edge-removal, smoothing (moves interior points), boundary-smoothing "
                        "(smoothing that also moves points within flat boundary faces and along straight boundary "
-                       "edges), topological (all but smoothing), all (all but boundary-smoothing) "
-                       "(default); or paper-flips: the paper's driver (rounds over every facet)");
+                       "edges), vertex-removal and vertex-insertion (interior vertices taken away and added where "
+                       "a cell has an angle below 30 or above 140 degrees), topological (all but smoothing), all (all "
+                       "but boundary-smoothing and the vertex changes) (default); or paper-flips: the paper's driver "
+                       "(rounds over every facet)");
   optimize->add_flag("--helper", opt.helper, "the helper strategy (Algorithm 4, Delaunay)");
   auto* start = optimize->add_option("--start", opt.start, "start of a point set: placing|placing:input|delaunay|scramble:K (default: delaunay with a quality "
                                      "criterion, placing with the Delaunay criterion or --helper)");

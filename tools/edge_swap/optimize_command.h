@@ -92,13 +92,15 @@ inline unsigned quality_operations(const std::string& list)
     else if(name == "two-step-edge-removal") bits |= ES::TWO_STEP_EDGE_REMOVAL;
     else if(name == "smoothing") bits |= ES::SMOOTHING;
     else if(name == "boundary-smoothing") bits |= ES::SMOOTHING | ES::BOUNDARY_SMOOTHING;
+    else if(name == "vertex-removal") bits |= ES::VERTEX_REMOVAL;
+    else if(name == "vertex-insertion") bits |= ES::VERTEX_INSERTION;
     else if(name == "topological") bits |= ES::TOPOLOGICAL_OPERATIONS;
     else if(name == "all") bits |= ES::ALL_OPERATIONS;
     else if(name == "paper-flips") bits |= paper_flips;
     else
       throw Usage_error("--operations: unknown operation '" + name +
                         "' (flips, edge-removal, multi-face-removal, two-step-edge-removal, smoothing, "
-                        "boundary-smoothing, topological, all, paper-flips)");
+                        "boundary-smoothing, vertex-removal, vertex-insertion, topological, all, paper-flips)");
     begin = end + 1;
   }
   if((bits & paper_flips) && bits != paper_flips)
@@ -118,9 +120,34 @@ inline ES::Mesh_statistics domain_statistics(const Triangulation& tr, const Inpu
   });
 }
 
-/// The worst-first driver (`--operations`) on `tr`: runs, writes, reports.
-inline int run_worst_first(const Optimize_options& o, const Input& in, Triangulation& tr, unsigned operations)
+/// The worst-first driver's visitor: its progress, and the numbers and
+/// field values of the vertices that vertex insertion makes and removal takes.
+template <class Criterion>
+class Worst_first_visitor : public Worst_first_progress<Criterion>
 {
+public:
+  Worst_first_visitor(const Criterion& criterion, Input& mesh)
+      : Worst_first_progress<Criterion>(criterion), numbers_(mesh, &ES::two_spheres_flow_field<Point>) {}
+
+  void after_insertion(const Triangulation& tr, Triangulation::Vertex_handle v,
+                       const std::array<Triangulation::Vertex_handle, 4>& corners, const std::array<double, 4>& weights) const
+  {
+    numbers_.after_insertion(tr, v, corners, weights);
+  }
+  void before_removal(const Triangulation& tr, Triangulation::Vertex_handle v, Triangulation::Vertex_handle onto) const
+  {
+    numbers_.before_removal(tr, v, onto);
+  }
+
+private:
+  ES::Numbered_vertex_visitor<Point> numbers_;
+};
+
+/// The worst-first driver (`--operations`) on `tr`: runs, writes, reports.
+inline int run_worst_first(const Optimize_options& o, const Input& given, Triangulation& tr, unsigned operations)
+{
+  Input in = given; // vertex insertion appends points
+  const std::size_t vertices_before = ES::number_of_mesh_vertices(tr);
   const std::size_t cells_before = ES::number_of_mesh_cells(tr);
   namespace np = ES::parameters;
   const ES::Quality_report report = ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
@@ -132,7 +159,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
         typedef std::decay_t<decltype(criterion)> Criterion;
         const auto settings = np::keep_dihedral_angle_range(o.angle_range == "keep",
             np::operations(operations, np::mesh_constraints(constraints,
-                CGAL::parameters::visitor(Worst_first_progress<Criterion>(criterion)))));
+                CGAL::parameters::visitor(Worst_first_visitor<Criterion>(criterion, in)))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
@@ -153,6 +180,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
                           {"multi_face_removals", report.face_removals},
                           {"faces_removed", report.faces_removed},
                           {"smoothing_moves", report.smoothing_moves},
+                          {"vertex_removals", report.vertex_removals},
+                          {"vertex_insertions", report.vertex_insertions},
                           {"flips", {{"2-3", report.flips[0]}, {"3-2", report.flips[1]}, {"2-2", report.flips[2]},
                                      {"4-4", report.flips[3]}}},
                           {"visits", report.visits},
@@ -169,7 +198,11 @@ inline int run_worst_first(const Optimize_options& o, const Input& in, Triangula
             << "; edge removals " << report.edge_removals << " (" << report.two_step_removals
             << " more in two steps), multi-face removals " << report.face_removals
             << " (" << report.faces_removed << " faces), flips 2-3 " << f[0] << ", 3-2 " << f[1] << ", 2-2 "
-            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves << "; worst "
+            << f[2] << ", 4-4 " << f[3] << ", smoothing moves " << report.smoothing_moves;
+  if(operations & (ES::VERTEX_REMOVAL | ES::VERTEX_INSERTION))
+    std::cout << ", vertices removed " << report.vertex_removals << ", inserted " << report.vertex_insertions << " ("
+              << vertices_before << " -> " << ES::number_of_mesh_vertices(tr) << ")";
+  std::cout << "; worst "
             << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << ES::number_of_mesh_cells(tr) << "; " << report.seconds << " s\n";
   return 0;
 }

@@ -47,6 +47,7 @@ struct Mesh_with_fields
   std::vector<std::vector<double>> cell_fields;         ///< `cell_fields[f][cell]`
   bool is_mesh = false;                                 ///< tetrahedra given (else a point set)
   bool has_references = false;                          ///< subdomains and boundaries apply (Medit, VTK `subdomain`)
+  std::vector<std::size_t> removed_points;              ///< points whose vertex an operation removed: snapshots leave them out
 
   /// The number of the point field `name`, or -1.
   int field_index(const std::string& name) const
@@ -289,6 +290,82 @@ std::vector<double> interpolated_field_values(const Mesh_with_fields<Point>& mes
   return values;
 }
 
+namespace internal {
+
+/// Leaves the points `removed` (used by no cell or triangle) out of `mesh`,
+/// and renumbers the others in their order.
+template <class Point>
+void leave_out_points(Mesh_with_fields<Point>& mesh, const std::vector<std::size_t>& removed)
+{
+  std::vector<char> gone(mesh.points.size(), 0);
+  for(std::size_t k : removed) gone[k] = 1;
+  std::vector<std::size_t> number(mesh.points.size());
+  // Points added after reading have no tag yet (the writer numbers them on).
+  std::size_t n = 0, tagged = 0;
+  for(std::size_t k = 0; k < mesh.points.size(); ++k)
+  {
+    number[k] = n;
+    if(gone[k]) continue;
+    mesh.points[n] = mesh.points[k];
+    for(auto& f : mesh.fields) f[n] = f[k];
+    if(k < mesh.point_tags.size()) mesh.point_tags[tagged++] = mesh.point_tags[k];
+    ++n;
+  }
+  mesh.points.resize(n);
+  for(auto& f : mesh.fields) f.resize(n);
+  mesh.point_tags.resize((std::min)(tagged, mesh.point_tags.size()));
+  for(auto& t : mesh.cells)
+    for(auto& k : t) k = number[k];
+  for(auto& t : mesh.triangles)
+    for(auto& k : t) k = number[k];
+}
+
+} // namespace internal
+
+/// \ingroup PkgEdgeSwapping3Domains
+/// The part of a `ReplacementVisitor_3` that keeps `mesh` (the mesh a
+/// `Numbered_domain_triangulation_3` was built from) in step with vertex
+/// insertion and removal: a new vertex is numbered after the points and takes
+/// the field values that `computed(name, p, value)` gives or, where it
+/// returns false, those interpolated linearly in the old cell that held it;
+/// a removed vertex's point goes to `mesh.removed_points`. Derive from it, or
+/// pass it as the `visitor`; `mesh` must outlive the run.
+template <class Point, class Computed = bool (*)(const std::string&, const Point&, double&)>
+class Numbered_vertex_visitor
+{
+public:
+  explicit Numbered_vertex_visitor(Mesh_with_fields<Point>& mesh,
+                                   Computed computed = [](const std::string&, const Point&, double&) { return false; })
+      : mesh_(&mesh), computed_(computed) {}
+
+  template <class Tr>
+  void before_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
+  template <class Tr>
+  void after_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
+  template <class Tr>
+  void after_move(const Tr&, typename Tr::Vertex_handle, const typename Tr::Point&) const {}
+  template <class Tr>
+  void after_insertion(const Tr&, typename Tr::Vertex_handle v, const std::array<typename Tr::Vertex_handle, 4>& corners,
+                       const std::array<double, 4>& weights) const
+  {
+    struct
+    {
+      std::array<typename Tr::Vertex_handle, 4> vertices;
+      std::array<double, 4> weights;
+    } where{corners, weights};
+    add_numbered_vertex(*mesh_, v, interpolated_field_values(*mesh_, Point(v->point()), where, computed_));
+  }
+  template <class Tr>
+  void before_removal(const Tr&, typename Tr::Vertex_handle v, typename Tr::Vertex_handle) const
+  {
+    mesh_->removed_points.push_back(v->info());
+  }
+
+private:
+  Mesh_with_fields<Point>* mesh_;
+  Computed computed_;
+};
+
 /// \ingroup PkgEdgeSwapping3Domains
 /// The mesh that `tr` is now, numbered as `mesh` (the mesh it was built from,
 /// with its added vertices): the points where they are (smoothing moves
@@ -297,6 +374,8 @@ std::vector<double> interpolated_field_values(const Mesh_with_fields<Point>& mes
 /// from the cell whose sorted point numbers come first, or from the finite
 /// side, so that the output does not depend on addresses), and the cell
 /// field `subdomain`. `add_quality_cell_fields()` adds the cells' quality.
+/// The points of `mesh.removed_points` are left out and the others renumbered
+/// in their order.
 template <class Tr, class Point>
 Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fields<Point>& mesh)
 {
@@ -337,6 +416,7 @@ Mesh_with_fields<Point> numbered_mesh_snapshot(const Tr& tr, const Mesh_with_fie
           {c->vertex((i + 1) & 3)->info(), c->vertex((i + 2) & 3)->info(), c->vertex((i + 3) & 3)->info()});
       out.triangle_references.push_back(c->info().facet_reference[i]);
     }
+  if(!mesh.removed_points.empty()) internal::leave_out_points(out, mesh.removed_points);
   return out;
 }
 

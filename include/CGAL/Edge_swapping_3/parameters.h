@@ -28,6 +28,7 @@ enum maximum_moves_per_vertex_t { maximum_moves_per_vertex };
 enum quality_target_t { quality_target };
 enum keep_dihedral_angle_range_t { keep_dihedral_angle_range };
 enum move_on_flat_boundary_t { move_on_flat_boundary };
+enum vertex_change_angles_t { vertex_change_angles };
 enum hint_t { hint };
 enum maximum_swaps_t { maximum_swaps };
 enum insertion_order_t { insertion_order };
@@ -102,6 +103,10 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(keep_dihedral_angle_range)
 /// `bool`: `smooth_vertex` may move a vertex within a flat patch or along a
 /// straight edge of the boundary (default false).
 CGAL_EDGE_SWAPPING_3_PARAMETER(move_on_flat_boundary)
+/// `std::pair<double, double>`: `improve_worst_tetrahedra` removes or inserts
+/// vertices only at cells with a dihedral angle, in degrees, below the first
+/// or above the second (default 30 and 140, as Stellar's results are read).
+CGAL_EDGE_SWAPPING_3_PARAMETER(vertex_change_angles)
 
 /// `Tr::Cell_handle`: where the walk of `insert_by_swapping` starts (default: anywhere).
 CGAL_EDGE_SWAPPING_3_PARAMETER(hint)
