@@ -1476,6 +1476,21 @@ TEST_CASE("The replacement visitor sees every operation of the quality driver - 
   }
 }
 
+namespace {
+
+// The points of the hull's vertices, in lexicographic order.
+std::vector<Point> sorted_hull_points(const Tr& tr)
+{
+  std::vector<Point> h;
+  std::vector<Tr::Vertex_handle> around;
+  tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(around));
+  for(auto v : around) h.push_back(v->point());
+  std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
+  return h;
+}
+
+} // namespace
+
 TEST_CASE("Vertex insertion in bad cells - a cavity filled exactly once - the worst new cell better - hull kept",
           "[vertex insertion]")
 {
@@ -1484,15 +1499,7 @@ TEST_CASE("Vertex insertion in bad cells - a cavity filled exactly once - the wo
   Tr tr;
   ES::insert_delaunay(tr, random_in_cube(400, seed));
   const auto volume = exact_volume(tr);
-  auto hull_points = [&]() {
-    std::vector<Point> h;
-    std::vector<Tr::Vertex_handle> around;
-    tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(around));
-    for(auto v : around) h.push_back(v->point());
-    std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
-    return h;
-  };
-  const auto hull = hull_points();
+  const auto hull = sorted_hull_points(tr);
   const ES::Max_min_dihedral_sine_criterion criterion;
   // The 40 worst cells, by their points (handles die as cells are replaced).
   std::vector<std::pair<double, std::array<Point, 4>>> worst;
@@ -1547,7 +1554,7 @@ TEST_CASE("Vertex insertion in bad cells - a cavity filled exactly once - the wo
   REQUIRE(tr.is_valid());
   REQUIRE(every_cell_positive(tr));
   REQUIRE(exact_volume(tr) == volume);
-  REQUIRE(hull_points() == hull);
+  REQUIRE(sorted_hull_points(tr) == hull);
   // An infinite cell is not a place for a vertex.
   REQUIRE(ES::insert_vertex(tr, tr.infinite_cell(), criterion).outcome == ES::CELL_NOT_IN_DOMAIN);
 }
@@ -1592,18 +1599,10 @@ TEST_CASE("The quality driver with vertex changes - valid - the hull and the vol
   const unsigned seed = 33;
   INFO("seed " << seed);
   const auto points = random_in_cube(500, seed);
-  auto hull_points = [](const Tr& tr) {
-    std::vector<Point> h;
-    std::vector<Tr::Vertex_handle> around;
-    tr.adjacent_vertices(tr.infinite_vertex(), std::back_inserter(around));
-    for(auto v : around) h.push_back(v->point());
-    std::sort(h.begin(), h.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
-    return h;
-  };
   Tr tr;
   ES::insert_delaunay(tr, points);
   const auto volume = exact_volume(tr);
-  const auto hull = hull_points(tr);
+  const auto hull = sorted_hull_points(tr);
   const ES::Max_min_dihedral_sine_criterion criterion;
   Tr kept = tr;
   const auto without = ES::improve_worst_tetrahedra(kept, criterion, ES::parameters::operations(ES::ALL_OPERATIONS));
@@ -1620,7 +1619,7 @@ TEST_CASE("The quality driver with vertex changes - valid - the hull and the vol
   REQUIRE(tr.is_valid());
   REQUIRE(every_cell_positive(tr));
   REQUIRE(exact_volume(tr) == volume);
-  REQUIRE(hull_points(tr) == hull);
+  REQUIRE(sorted_hull_points(tr) == hull);
   // No vertex came or went in a cell within the angles (30 and 140 by
   // default): with bounds that every cell meets, none does.
   Tr again;

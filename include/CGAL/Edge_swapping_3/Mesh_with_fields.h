@@ -13,6 +13,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
+#include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/tetrahedron_quality.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
 #include <CGAL/Edge_swapping_3/internal/exterior_fill.h>
@@ -331,19 +332,13 @@ void leave_out_points(Mesh_with_fields<Point>& mesh, const std::vector<std::size
 /// a removed vertex's point goes to `mesh.removed_points`. Derive from it, or
 /// pass it as the `visitor`; `mesh` must outlive the run.
 template <class Point, class Computed = bool (*)(const std::string&, const Point&, double&)>
-class Numbered_vertex_visitor
+class Numbered_vertex_visitor : public Default_replacement_visitor
 {
 public:
   explicit Numbered_vertex_visitor(Mesh_with_fields<Point>& mesh,
                                    Computed computed = [](const std::string&, const Point&, double&) { return false; })
       : mesh_(&mesh), computed_(computed) {}
 
-  template <class Tr>
-  void before_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
-  template <class Tr>
-  void after_replacement(const Tr&, const std::vector<typename Tr::Cell_handle>&) const {}
-  template <class Tr>
-  void after_move(const Tr&, typename Tr::Vertex_handle, const typename Tr::Point&) const {}
   template <class Tr>
   void after_insertion(const Tr&, typename Tr::Vertex_handle v, const std::array<typename Tr::Vertex_handle, 4>& corners,
                        const std::array<double, 4>& weights) const

@@ -445,7 +445,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       // facet that bounds the quality (a needle on the hull), each new vertex
       // would otherwise gain a little on the last, on and on: on 2,000
       // random points, 17,415 insertions in 412 s; with this rule, 521
-      // in 26 s, and fewer bad cells (doc/Edge_swapping_3/user_manual.md).
+      // in 10 s, and fewer bad cells (doc/Edge_swapping_3/user_manual.md).
       bool inserted_corner = false;
       for(int i = 0; i < 4; ++i) inserted_corner = inserted_corner || inserted.contains(c->vertex(i));
       typename Tr::Vertex_handle made;
