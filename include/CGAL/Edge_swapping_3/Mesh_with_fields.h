@@ -335,10 +335,12 @@ template <class Point, class Computed = bool (*)(const std::string&, const Point
 class Numbered_vertex_visitor : public Default_replacement_visitor
 {
 public:
+  /// Keeps `mesh` in step; `computed` gives the fields it knows (by default none).
   explicit Numbered_vertex_visitor(Mesh_with_fields<Point>& mesh,
                                    Computed computed = [](const std::string&, const Point&, double&) { return false; })
       : mesh_(&mesh), computed_(computed) {}
 
+  /// Numbers `v` after the points and gives it its field values.
   template <class Tr>
   void after_insertion(const Tr&, typename Tr::Vertex_handle v, const std::array<typename Tr::Vertex_handle, 4>& corners,
                        const std::array<double, 4>& weights) const
@@ -350,6 +352,7 @@ public:
     } where{corners, weights};
     add_numbered_vertex(*mesh_, v, interpolated_field_values(*mesh_, Point(v->point()), where, computed_));
   }
+  /// Records the point of `v` as removed.
   template <class Tr>
   void before_removal(const Tr&, typename Tr::Vertex_handle v, typename Tr::Vertex_handle) const
   {
