@@ -116,14 +116,23 @@ struct Edge_star
       std::reverse(cells.begin(), cells.end());
       std::rotate(ring.rbegin(), ring.rbegin() + 1, ring.rend());
     }
-    // The infinite vertex last: s_{n-1} = infinite, cell n-1 is (a, b, inf, s_0).
+    // The infinite vertex last: s_{n-1} = infinite, cell n-1 is (a, b, inf,
+    // s_0). Inside, the smallest point first (lexicographically): the ring
+    // then does not depend on the cell the edge was given by, nor do the
+    // removals planned on it (equally good triangulations are told apart by
+    // their order in the ring), so a failure remembered holds for the edge.
+    std::size_t first = 0;
     for(std::size_t k = 0; k < n; ++k)
       if(tr.is_infinite(ring[k]))
       {
-        std::rotate(ring.begin(), ring.begin() + (k + 1) % n, ring.end());
-        std::rotate(cells.begin(), cells.begin() + (k + 1) % n, cells.end());
+        first = (k + 1) % n;
         break;
       }
+      else if(tr.geom_traits().compare_xyz_3_object()(bare_point(ring[k]->point()), bare_point(ring[first]->point())) ==
+              SMALLER)
+        first = k;
+    std::rotate(ring.begin(), ring.begin() + first, ring.end());
+    std::rotate(cells.begin(), cells.begin() + first, cells.end());
   }
 
   /// A hash of the ring's edges (s_k, s_{k+1}), which fix the cells around
@@ -171,11 +180,15 @@ public:
     };
     // The two tetrahedra of triangle (i, k, j), i < k < j, positively
     // oriented as tuples; -inf when either is not positive or does not
-    // score above the floor.
-    auto triangle_score = [&](int i, int k, int j) {
+    // score above `bound` (the floor, or what the polygon has already: no
+    // worse triangle changes the result, so the second tetrahedron and the
+    // orientations are left unmeasured).
+    auto triangle_score = [&](int i, int k, int j, double bound) {
       const Tuple ta = {star.a, s[j], s[k], s[i]}, tb = {star.b, s[i], s[k], s[j]};
-      const double value = (std::min)(valued(ta), valued(tb));
-      if(!(value > floor)) return -HUGE_VAL;
+      const double first = valued(ta);
+      if(!(first > bound)) return -HUGE_VAL;
+      const double value = (std::min)(first, valued(tb));
+      if(!(value > bound)) return -HUGE_VAL;
       for(const Tuple& t : {ta, tb})
         if(planned_cell_orientation(tr, t, others.data(), int(others.size())) != POSITIVE) return -HUGE_VAL;
       return value;
@@ -189,7 +202,7 @@ public:
         {
           const double sides = (std::min)(best_[i * n_ + k], best_[k * n_ + j]);
           if(!(sides > floor) || !(sides > best_[i * n_ + j])) continue;
-          const double value = (std::min)(sides, triangle_score(i, k, j));
+          const double value = (std::min)(sides, triangle_score(i, k, j, (std::max)(floor, best_[i * n_ + j])));
           if(value > -HUGE_VAL && value > best_[i * n_ + j])
           {
             best_[i * n_ + j] = value;
@@ -251,8 +264,7 @@ template <class Tr, class Measure, bool larger_is_worse, class Constraints, clas
 Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
                                      const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                      const Constraints& constraints, Visitor& visitor,
-                                     std::vector<typename Tr::Cell_handle>& created,
-                                     const double* required = nullptr)
+                                     std::vector<typename Tr::Cell_handle>& created, bool better_only = false)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
@@ -275,11 +287,17 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
     if(!tr.is_infinite(c)) before = (std::min)(before, score(tuple_of<Tr>(c)));
   report.quality_before = larger_is_worse ? -before : before;
 
-  const Ring_triangulation<Tr, decltype(score)> best(tr, star, score);
-  if(!best.exists()) { report.outcome = NO_VALID_TRIANGULATION; return report; }
-  report.quality_after = larger_is_worse ? -best.score() : best.score();
+  // With `better_only`, the dynamic program looks only for triangulations
+  // that beat the cells around the edge, which prunes most of its work; it
+  // finds the same best one when there is one (the best beats the floor, so
+  // no triangle of it was left out), and a failure is then NO_IMPROVEMENT
+  // with no `quality_after`.
   const double tolerance = criterion.relative_tolerance;
-  const double bar = required != nullptr ? *required : report.quality_before;
+  const double bar = report.quality_before;
+  const double floor = !better_only ? -HUGE_VAL : larger_is_worse ? -bar * (1 - tolerance) : bar * (1 + tolerance);
+  const Ring_triangulation<Tr, decltype(score)> best(tr, star, score, floor);
+  if(!best.exists()) { report.outcome = better_only ? NO_IMPROVEMENT : NO_VALID_TRIANGULATION; return report; }
+  report.quality_after = larger_is_worse ? -best.score() : best.score();
   const bool better = larger_is_worse ? report.quality_after < bar * (1 - tolerance)
                                       : report.quality_after > bar * (1 + tolerance);
   if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
@@ -299,7 +317,8 @@ using Edge_removal_failures = Failure_cache<Edge_key<Tr>, Edge_key_hash, Edge_re
 
 /// `remove_edge` with its settings spelled out; the new cells (finite and
 /// infinite) are appended to `created`. With `failures`, a star already
-/// tried is not tried again.
+/// tried is not tried again, and only triangulations that beat the star are
+/// looked for (`remove_edge_star`'s `better_only`).
 template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
                                 const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
@@ -317,7 +336,7 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
   const std::uint64_t signature = star.signature(tr);
   if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
-  report = remove_edge_star(tr, star, criterion, constraints, visitor, created);
+  report = remove_edge_star(tr, star, criterion, constraints, visitor, created, true);
   failures->record(key, signature, report, report.removed());
   return report;
 }

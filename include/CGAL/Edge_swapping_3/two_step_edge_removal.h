@@ -80,18 +80,27 @@ ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
   return ring;
 }
 
+/// The best worst score of the triangulations of an edge's ring (-inf: no
+/// valid one), by the edge and the signature of its star. The first steps
+/// of two-step removal are the removals of the edges around the edge's ends,
+/// and the quality driver tries them again and again with other floors.
+template <class Tr>
+using Edge_removal_bests = Value_cache<Edge_key<Tr>, Edge_key_hash>;
+
 /// The two-step removal of `e` alone (the plain removal is not tried): for
 /// each edge (x, s) with x an end of `e` and s a finite vertex of its ring,
 /// in ring order, whether a triangulation of the ring of (x, s) whose cells
 /// beat the worst around `e` leaves a ring around `e` that has one too;
 /// the first such pair is made. Nothing changes until both steps are known
 /// to succeed. `created` receives the cells of both steps that remain. The
-/// attempt reads only cells through an end of `e` (and their points).
+/// attempt reads only cells through an end of `e` (and their points). With
+/// `bests`, the best of each first step's star is remembered.
 template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
                                              const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                              const Constraints& constraints, Visitor& visitor, int maximum,
-                                             std::vector<typename Tr::Cell_handle>& created)
+                                             std::vector<typename Tr::Cell_handle>& created,
+                                             Edge_removal_bests<Tr>* bests = nullptr)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -107,16 +116,6 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
   if(star_is_constrained(tr, star, constraints)) { report.outcome = EDGE_CONSTRAINED; return report; }
   report.outcome = NO_IMPROVEMENT;
   const Vertex_handle a = star.a, b = star.b;
-  // The first steps to try, with the position of s in the ring.
-  // Cell k of the star holds x and s_k.
-  std::vector<std::pair<std::size_t, Edge_star<Tr>>> firsts;
-  for(std::size_t k = 0; k < star.ring.size(); ++k)
-    if(!tr.is_infinite(star.ring[k]))
-      for(Vertex_handle x : {a, b})
-      {
-        const Cell_handle c = star.cells[k];
-        firsts.emplace_back(k, Edge_star<Tr>(tr, Edge(c, c->index(x), c->index(star.ring[k])), maximum));
-      }
 
   // Scores: larger is better; both steps must score above `floor`.
   auto value = [&](const Tuple& t) {
@@ -131,9 +130,32 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
   const double tolerance = criterion.relative_tolerance;
   const double floor = larger_is_worse ? -bar * (1 - tolerance) : bar * (1 + tolerance);
 
-  for(const auto& [k, inner] : firsts)
+  // The first steps, in turn: the edge from x to s_k, the ring vertex at
+  // position k (cell k of the star holds x and s_k).
+  for(std::size_t first_step = 0; first_step < 2 * star.ring.size(); ++first_step)
   {
+    const std::size_t k = first_step / 2;
+    if(tr.is_infinite(star.ring[k])) continue;
+    const Vertex_handle x = first_step % 2 == 0 ? a : b;
+    const Cell_handle around = star.cells[k];
+    const Edge_star<Tr> inner(tr, Edge(around, around->index(x), around->index(star.ring[k])), maximum);
     if(int(inner.cells.size()) > maximum || star_is_constrained(tr, inner, constraints)) continue;
+    // With `bests`, the first step's best is found once for its star, and
+    // then only a star that can beat the floor is solved again (with the
+    // floor: the same best triangulation, found faster).
+    if(bests != nullptr)
+    {
+      const Edge_key<Tr> key = edge_key<Tr>(inner.a, inner.b);
+      const std::uint64_t signature = inner.signature(tr);
+      double best;
+      if(!bests->find(key, signature, best))
+      {
+        const Ring_triangulation<Tr, decltype(score)> any(tr, inner, score);
+        best = any.exists() ? any.score() : -HUGE_VAL;
+        bests->record(key, signature, best);
+      }
+      if(!(best > floor)) continue;
+    }
     const Ring_triangulation<Tr, decltype(score)> step1(tr, inner, score, floor);
     if(!step1.exists()) continue;
     Edge_star<Tr> after;

@@ -51,6 +51,14 @@ std::uint64_t vertex_signature(const Tr& tr, typename Tr::Vertex_handle v)
 /// "Quality at scale"), so there a forgotten failure tried again may succeed.
 /// Only the outcome is kept: a remembered failure comes back as a
 /// report with its outcome alone.
+// The even slot of a fingerprint's pair among `pairs`: the high half of the
+// product of a 32-bit hash and the number of pairs spreads over any number
+// of pairs, so a table is the size asked for, not the next power of two.
+inline std::size_t pair_of(std::uint64_t f, std::uint64_t pairs)
+{
+  return 2 * std::size_t(((mix_bits(f) >> 32) * pairs) >> 32);
+}
+
 template <class Key, class Hash, class Report>
 class Failure_cache
 {
@@ -104,17 +112,64 @@ private:
     // The low byte holds the outcome; a fingerprint is never 0 (an empty place).
     return (mix_bits(signature ^ mix_bits(std::uint64_t(Hash()(key)))) & ~std::uint64_t(0xFF)) | 0x100;
   }
-  // The even slot of the fingerprint's pair: the high half of the product of
-  // a 32-bit hash and the number of pairs spreads over any number of pairs,
-  // so the table is the size asked for, not the next power of two.
-  std::size_t place(std::uint64_t f) const
-  {
-    const std::uint64_t pairs = slots_.size() / 2;
-    return 2 * std::size_t(((mix_bits(f) >> 32) * pairs) >> 32);
-  }
+  std::size_t place(std::uint64_t f) const { return pair_of(f, slots_.size() / 2); }
 
   std::vector<std::uint64_t> slots_;
   Report found_;
+  std::uint64_t next_ = 0;
+};
+
+// A value computed from the cells a signature covers (the best worst score
+// of an edge's star, say), remembered in a fixed amount of memory, two
+// places per fingerprint: a value forgotten is computed again.
+template <class Key, class Hash>
+class Value_cache
+{
+public:
+  explicit Value_cache(std::size_t capacity)
+  {
+    if(capacity == 0) return;
+    capacity = std::size_t((std::min)(std::uint64_t(capacity), std::uint64_t(1) << 33));
+    slots_.assign((std::max)(std::size_t(2), capacity + (capacity & 1)), Slot{0, 0});
+  }
+
+  bool find(const Key& key, std::uint64_t signature, double& value) const
+  {
+    if(slots_.empty()) return false;
+    const std::uint64_t f = fingerprint(key, signature);
+    const std::size_t i = pair_of(f, slots_.size() / 2);
+    for(std::size_t k : {i, i ^ 1})
+      if(slots_[k].fingerprint == f)
+      {
+        value = slots_[k].value;
+        return true;
+      }
+    return false;
+  }
+
+  void record(const Key& key, std::uint64_t signature, double value)
+  {
+    if(slots_.empty()) return;
+    const std::uint64_t f = fingerprint(key, signature);
+    const std::size_t i = pair_of(f, slots_.size() / 2);
+    const std::size_t k = slots_[i].fingerprint == 0 || slots_[i].fingerprint == f ? i
+                          : slots_[i ^ 1].fingerprint == 0 ? i ^ 1
+                                                            : (i ^ std::size_t(next_++ & 1));
+    slots_[k] = Slot{f, value};
+  }
+
+private:
+  struct Slot
+  {
+    std::uint64_t fingerprint; // 0: empty
+    double value;
+  };
+  static std::uint64_t fingerprint(const Key& key, std::uint64_t signature)
+  {
+    return mix_bits(signature ^ mix_bits(std::uint64_t(Hash()(key)))) | 1;
+  }
+
+  std::vector<Slot> slots_;
   std::uint64_t next_ = 0;
 };
 
