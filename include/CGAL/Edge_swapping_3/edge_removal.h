@@ -89,26 +89,32 @@ struct Edge_star
   Edge_star(const Tr& tr, const typename Tr::Edge& e, int maximum)
     : a(e.first->vertex(e.second)), b(e.first->vertex(e.third))
   {
-    auto circ = tr.incident_cells(e), done = circ;
-    do
+    // Around the edge through the cells' neighbours: cell k holds s_k and
+    // s_{k+1}, and the next cell lies across s_k, where the vertex off the
+    // facet they share is s_{k+2} (two index lookups a cell).
+    const Cell_handle start = e.first;
+    int behind = 0;
+    while(behind == e.second || behind == e.third) ++behind;
+    Vertex_handle ahead = start->vertex(6 - e.second - e.third - behind);
+    ring.push_back(start->vertex(behind));
+    cells.push_back(start);
+    on_hull = tr.is_infinite(a) || tr.is_infinite(b) || tr.is_infinite(ring.back()) || tr.is_infinite(ahead);
+    for(Cell_handle cur = start, next = start->neighbor(behind); next != start;
+        next = cur->neighbor(cur->index(ring.back())))
     {
-      if(tr.is_infinite(circ)) on_hull = true;
-      cells.push_back(circ);
-      ++circ;
-    } while(circ != done && int(cells.size()) <= maximum);
-    if(int(cells.size()) > maximum) return;
-    const std::size_t n = cells.size();
-    // s_k is shared by cells k-1 and k.
-    ring.resize(n);
-    for(std::size_t k = 0; k < n; ++k)
-    {
-      const Cell_handle prev = cells[(k + n - 1) % n], cur = cells[k];
-      for(int m = 0; m < 4; ++m)
-      {
-        const Vertex_handle v = cur->vertex(m);
-        if(v != a && v != b && prev->has_vertex(v)) { ring[k] = v; break; }
-      }
+      if(int(cells.size()) > maximum) break;
+      ring.push_back(ahead);
+      cells.push_back(next);
+      ahead = next->vertex(next->index(cur));
+      on_hull = on_hull || tr.is_infinite(ahead);
+      cur = next;
     }
+    if(int(cells.size()) > maximum)
+    {
+      ring.clear(); // too many cells: no ring
+      return;
+    }
+    const std::size_t n = cells.size();
     if(permutation_sign<Tr>(cells[0], {a, b, ring[0], ring[1 % n]}) > 0)
     {
       // Turn the other way: cell k must hold s_k and s_{k+1}.

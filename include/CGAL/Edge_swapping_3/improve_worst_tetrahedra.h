@@ -284,10 +284,11 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   // attempt. Times are counts of changes, plus one (0: never tried), in 32
   // bits: past 2^32 - 2 changes no stamp moves, and nothing is remembered.
   internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 4 * failure_slots : 0);
-  // The best of each first step's star, 16 bytes a place, a place per eight
-  // cells (the driver then holds 1.19 times the triangulation at 10^5
-  // points): a star's best is found once for every floor it is tried with.
-  internal::Edge_removal_bests<Tr> first_step_bests((operations & TWO_STEP_EDGE_REMOVAL) ? failure_slots : 0);
+  // Bounds on the best of the stars of two-step removal's steps, 16 bytes a
+  // place, a place per eight cells (the driver then holds 1.19 times the
+  // triangulation at 10^5 points): a star that cannot beat a floor is not
+  // solved again.
+  internal::Edge_removal_bounds<Tr> two_step_bounds((operations & TWO_STEP_EDGE_REMOVAL) ? failure_slots : 0);
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
       tr.tds().vertices());
   std::vector<std::uint32_t> stamps((operations & TWO_STEP_EDGE_REMOVAL) ? vertex_slots.number_of_slots() : 0, 0);
@@ -401,7 +402,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
           if(stamped && two_step_failures.find(key, signature) != nullptr) continue;
           const auto attempt = internal::remove_edge_in_two_steps(tr, typename Tr::Edge(c, i, j), criterion,
                                                                   constraints, visitor, maximum_ring, created,
-                                                                  &first_step_bests);
+                                                                  &two_step_bounds);
           improved = attempt.removed();
           if(stamped) two_step_failures.record(key, signature, attempt, improved);
           if(improved) ++report.two_step_removals;

@@ -22,6 +22,7 @@
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -80,12 +81,13 @@ ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
   return ring;
 }
 
-/// The best worst score of the triangulations of an edge's ring (-inf: no
-/// valid one), by the edge and the signature of its star. The first steps
-/// of two-step removal are the removals of the edges around the edge's ends,
-/// and the quality driver tries them again and again with other floors.
+/// A bound on the best worst score of the triangulations of an edge's ring
+/// (the best is at most the bound), by the edge and the signature of its
+/// star. The quality driver tries the steps of two-step removal (the
+/// removals of the edges around the edge's ends, then of the edge in the
+/// ring the first leaves) again and again, with floors that mostly rise.
 template <class Tr>
-using Edge_removal_bests = Value_cache<Edge_key<Tr>, Edge_key_hash>;
+using Edge_removal_bounds = Value_cache<Edge_key<Tr>, Edge_key_hash>;
 
 /// The two-step removal of `e` alone (the plain removal is not tried): for
 /// each edge (x, s) with x an end of `e` and s a finite vertex of its ring,
@@ -94,13 +96,13 @@ using Edge_removal_bests = Value_cache<Edge_key<Tr>, Edge_key_hash>;
 /// the first such pair is made. Nothing changes until both steps are known
 /// to succeed. `created` receives the cells of both steps that remain. The
 /// attempt reads only cells through an end of `e` (and their points). With
-/// `bests`, the best of each first step's star is remembered.
+/// `bounds`, a bound on the best of each star of either step is remembered.
 template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
 Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
                                              const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
                                              const Constraints& constraints, Visitor& visitor, int maximum,
                                              std::vector<typename Tr::Cell_handle>& created,
-                                             Edge_removal_bests<Tr>* bests = nullptr)
+                                             Edge_removal_bounds<Tr>* bounds = nullptr)
 {
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -130,6 +132,26 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
   const double tolerance = criterion.relative_tolerance;
   const double floor = larger_is_worse ? -bar * (1 - tolerance) : bar * (1 + tolerance);
 
+  // Whether a triangulation of the star's ring beats the floor; the best
+  // one, when it does, in `best`. With `bounds`, a bound on the best of each
+  // star (a star of the mesh, or the ring the first step would leave) is
+  // remembered: a failure tells that the best is at most the floor, a
+  // success what it is; a star whose bound is not above the floor is not
+  // solved again.
+  auto beats_floor = [&](const Edge_star<Tr>& around, std::optional<Ring_triangulation<Tr, decltype(score)>>& best) {
+    Edge_key<Tr> key;
+    std::uint64_t signature = 0;
+    if(bounds != nullptr)
+    {
+      key = edge_key<Tr>(around.a, around.b);
+      signature = around.signature(tr);
+      double bound;
+      if(bounds->find(key, signature, bound) && !(bound > floor)) return false;
+    }
+    best.emplace(tr, around, score, floor);
+    if(bounds != nullptr) bounds->record(key, signature, best->exists() ? best->score() : floor);
+    return best->exists();
+  };
   // The first steps, in turn: the edge from x to s_k, the ring vertex at
   // position k (cell k of the star holds x and s_k).
   for(std::size_t first_step = 0; first_step < 2 * star.ring.size(); ++first_step)
@@ -140,39 +162,21 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
     const Cell_handle around = star.cells[k];
     const Edge_star<Tr> inner(tr, Edge(around, around->index(x), around->index(star.ring[k])), maximum);
     if(int(inner.cells.size()) > maximum || star_is_constrained(tr, inner, constraints)) continue;
-    // With `bests`, the first step's best is found once for its star, and
-    // then only a star that can beat the floor is solved again (with the
-    // floor: the same best triangulation, found faster).
-    if(bests != nullptr)
-    {
-      const Edge_key<Tr> key = edge_key<Tr>(inner.a, inner.b);
-      const std::uint64_t signature = inner.signature(tr);
-      double best;
-      if(!bests->find(key, signature, best))
-      {
-        const Ring_triangulation<Tr, decltype(score)> any(tr, inner, score);
-        best = any.exists() ? any.score() : -HUGE_VAL;
-        bests->record(key, signature, best);
-      }
-      if(!(best > floor)) continue;
-    }
-    const Ring_triangulation<Tr, decltype(score)> step1(tr, inner, score, floor);
-    if(!step1.exists()) continue;
+    std::optional<Ring_triangulation<Tr, decltype(score)>> step1, step2;
+    if(!beats_floor(inner, step1)) continue;
     Edge_star<Tr> after;
     after.a = a;
     after.b = b;
-    after.ring = ring_after(tr, star, k, step1.cells());
-    if(after.ring.size() < 3 || int(after.ring.size()) > maximum) continue;
-    const Ring_triangulation<Tr, decltype(score)> step2(tr, after, score, floor);
-    if(!step2.exists()) continue;
+    after.ring = ring_after(tr, star, k, step1->cells());
+    if(after.ring.size() < 3 || int(after.ring.size()) > maximum || !beats_floor(after, step2)) continue;
     // Both steps are known to succeed: make them.
-    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1.cells(), constraints, visitor);
+    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1->cells(), constraints, visitor);
     const Cell_handle through = *std::find_if(first.begin(), first.end(),
                                               [&](Cell_handle c) { return c->has_vertex(a) && c->has_vertex(b); });
     const Edge_star<Tr> second(tr, Edge(through, through->index(a), through->index(b)), maximum);
     CGAL_assertion(second.ring.size() == after.ring.size() &&
                    std::is_permutation(second.ring.begin(), second.ring.end(), after.ring.begin()));
-    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2.cells(), constraints, visitor);
+    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2->cells(), constraints, visitor);
     const std::size_t before_count = created.size();
     for(Cell_handle c : first)
       if(std::find(second.cells.begin(), second.cells.end(), c) == second.cells.end()) created.push_back(c);

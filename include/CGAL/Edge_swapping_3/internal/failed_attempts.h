@@ -119,9 +119,9 @@ private:
   std::uint64_t next_ = 0;
 };
 
-// A value computed from the cells a signature covers (the best worst score
-// of an edge's star, say), remembered in a fixed amount of memory, two
-// places per fingerprint: a value forgotten is computed again.
+// A value computed from the cells a signature covers (a bound on the best
+// worst score of an edge's star, say), remembered in a fixed amount of
+// memory, two places per fingerprint: a value forgotten is computed again.
 template <class Key, class Hash>
 class Value_cache
 {
