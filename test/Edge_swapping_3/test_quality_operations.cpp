@@ -865,10 +865,10 @@ TEST_CASE("The quality driver's result depends on the mesh only - not on where i
 {
   // The driver forgets failed attempts in tables placed by address, so a
   // copy of the mesh elsewhere in memory forgets others: every attempt must
-  // give the same answer when made again. (A two-step removal that took the
-  // first of equally good triangulations in ring order, with the ring
-  // starting at the cell it was reached by, did not: 2,000 random points
-  // gave another mesh in the copy.)
+  // give the same answer when made again. (Were an edge's ring to start at
+  // the cell the edge was reached by, a two-step removal could take another
+  // of equally good triangulations; these 2,000 points then end as another
+  // mesh in the copy.)
   const unsigned seed = 1;
   INFO("seed " << seed);
   Tr tr;
