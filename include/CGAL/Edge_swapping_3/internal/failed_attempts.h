@@ -40,17 +40,6 @@ std::uint64_t vertex_signature(const Tr& tr, typename Tr::Vertex_handle v)
   return h;
 }
 
-/// Failed attempts in a fixed amount of memory: a table of fingerprints (the
-/// key's hash mixed with the signature of the cells read, and the outcome),
-/// two places per fingerprint, the older one overwritten when both are
-/// taken. A failure that was overwritten is tried again; for edge and
-/// multi-face removal the attempt is a function of the cells its signature
-/// covers, so forgetting costs time and leaves the run as it was (the same
-/// operations from the Delaunay meshes of 10^4 and 10^5 points, in the
-/// benchmark); a two-step removal's signature covers less (benchmarks.md,
-/// "Quality at scale"), so there a forgotten failure tried again may succeed.
-/// Only the outcome is kept: a remembered failure comes back as a
-/// report with its outcome alone.
 // The even slot of a fingerprint's pair among `pairs`: the high half of the
 // product of a 32-bit hash and the number of pairs spreads over any number
 // of pairs, so a table is the size asked for, not the next power of two.
@@ -59,6 +48,15 @@ inline std::size_t pair_of(std::uint64_t f, std::uint64_t pairs)
   return 2 * std::size_t(((mix_bits(f) >> 32) * pairs) >> 32);
 }
 
+/// Failed attempts in a fixed amount of memory: a table of fingerprints (the
+/// key's hash mixed with the signature of the cells read, and the outcome),
+/// two places per fingerprint, the older one overwritten when both are
+/// taken. A failure that was overwritten is tried again. The attempt is a
+/// function of what its signature covers (for two-step removal, the change
+/// stamps of the edge's ends, with the ring starting at its smallest point),
+/// so forgetting costs time and leaves the run as it was. Only the outcome
+/// is kept: a remembered failure comes back as a report with its outcome
+/// alone.
 template <class Key, class Hash, class Report>
 class Failure_cache
 {
@@ -152,9 +150,10 @@ public:
     if(slots_.empty()) return;
     const std::uint64_t f = fingerprint(key, signature);
     const std::size_t i = pair_of(f, slots_.size() / 2);
-    const std::size_t k = slots_[i].fingerprint == 0 || slots_[i].fingerprint == f ? i
-                          : slots_[i ^ 1].fingerprint == 0 ? i ^ 1
-                                                            : (i ^ std::size_t(next_++ & 1));
+    // The fingerprint's own place, else an empty one, else one of the two, in turn.
+    std::size_t k = slots_[i ^ 1].fingerprint == f ? i ^ 1 : i;
+    if(slots_[k].fingerprint != f && slots_[k].fingerprint != 0)
+      k = slots_[i ^ 1].fingerprint == 0 ? i ^ 1 : (i ^ std::size_t(next_++ & 1));
     slots_[k] = Slot{f, value};
   }
 
