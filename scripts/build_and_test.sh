@@ -21,7 +21,10 @@ step() { # NAME COMMAND...: runs it and says how long it took
   "$@"
   echo "build_and_test.sh: $name took $((SECONDS - start)) s"
 }
-step "installing what is missing" bash scripts/install_dependencies.sh
+# The extended tests start a Slurm cluster of one node and run GNU parallel.
+cluster_packages=()
+[ $extended = OFF ] || cluster_packages=(slurmctld slurmd slurm-client munge parallel)
+step "installing what is missing" bash scripts/install_dependencies.sh "${cluster_packages[@]}"
 step "configuring" cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEDGE_SWAPPING_3_BUILD_EXAMPLES=$extended \
   -DEDGE_SWAPPING_3_BUILD_BENCHMARKS=$extended -DEDGE_SWAPPING_3_BUILD_LABORATORY=$extended \
   -DEDGE_SWAPPING_3_BUILD_EXTENDED_TESTS=$extended
