@@ -39,7 +39,8 @@
 # and every reading agrees, with every run at the limit a certified loop or seen to
 # end later; 1 when not; 2 for bad arguments (no OUTDIR made) or shards not
 # finished (each named with its log). `run` with Slurm: 0 once submitted, 2 for bad
-# arguments or a submission refused. `task`: the shard script's status.
+# arguments or a job the cluster refuses (tried with sbatch --test-only before OUTDIR is
+# made). `task`: the shard script's status.
 #
 # Programs: EDGE_SWAP_LAB and EXPERIMENT_PRIORITY_LOOPS, else the build folder's.
 
@@ -58,7 +59,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 SHARD_SCRIPT = os.path.join(HERE, "stream_and_certify_shard.sh")
 BUILD_BIN = os.path.normpath(os.path.join(HERE, "..", "..", "build", "bin"))
-SET = re.compile(r"^(random-integer:[0-9]{1,9}:[0-9]{1,9}|family:[a-z0-9x-]+:[0-9]{1,9}:[0-9]{1,9})$")
+SET = re.compile(r"^(random-integer:[0-9]{1,9}:[0-9]{1,9}|family:[a-z0-9-]+:[0-9]{1,9}:[0-9]{1,9})$")
 # Slurm states of a job that will still run, or is running.
 ACTIVE = {"PENDING", "RUNNING", "CONFIGURING", "COMPLETING", "SUSPENDED", "REQUEUED", "REQUEUE_HOLD",
           "REQUEUE_FED", "RESIZING", "SIGNALING", "STAGE_OUT", "STOPPED", "RESV_DEL_HOLD"}
@@ -324,6 +325,11 @@ def run(a):
     except ValueError as error:
         raise Bad("--sbatch '%s': %s" % (a.sbatch, error))
     env = programs()
+    if a.engine == "slurm":  # the cluster answers and takes the options, before anything is made
+        test = subprocess.run(["sbatch", "--test-only"] + extra + ["--wrap", "true"], capture_output=True, text=True)
+        if test.returncode != 0:
+            raise Bad("sbatch --test-only%s refused the job (exit status %d): %s" % (
+                "".join(" " + shlex.quote(x) for x in extra), test.returncode, test.stderr.strip()))
     outdir = os.path.abspath(a.outdir)
     wanted = {"set": a.set, "shards": int(a.shards), "batch": int(a.batch)}
     if os.path.exists(os.path.join(outdir, "experiment.json")):

@@ -28,11 +28,9 @@
 # runs at the limit, and each run at the limit is a loop or seen to end later;
 # 1 when not; 2 for bad arguments (no OUTDIR made) or a step that failed.
 #
-# A Slurm array of 64 tasks for set 3 of the 12 random points:
-#   sbatch --array=0-63 --cpus-per-task=1 --wrap \
-#     'bash laboratory/scripts/stream_and_certify_shard.sh out/set3_$SLURM_ARRAY_TASK_ID random-integer:12:3 $SLURM_ARRAY_TASK_ID 64'
-# GNU parallel on one machine:
-#   parallel -j 16 bash laboratory/scripts/stream_and_certify_shard.sh out/set3_{} random-integer:12:3 {} 64 ::: $(seq 0 63)
+# cluster_experiment.py runs the N tasks of a set as a Slurm job array (or through
+# GNU parallel) and merges them: set 3 of the 12 random points in 64 tasks is
+#   python3 laboratory/scripts/cluster_experiment.py run out/set3 random-integer:12:3 64
 set -euo pipefail
 usage="usage: stream_and_certify_shard.sh OUTDIR SET I N [BATCH]  (SET: random-integer:SIZE:S or family:NAME:SIZE:S)"
 bad() {

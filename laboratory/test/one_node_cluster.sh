@@ -167,6 +167,10 @@ grep -q '^- 36 of 36 readings agree; the stream has 6,626 fixed-order runs at th
 
 # --- Slurm: an array of 6 tasks, one cancelled while it runs --------------------------------------
 out=$work/slurm
+status=0
+python3 "$script" run "$out" $set_name $shards --sbatch=--partition=none > /dev/null 2> "$work/bad.txt" || status=$?
+[ $status = 2 ] && grep -q "sbatch --test-only --partition=none refused the job" "$work/bad.txt" && [ ! -e "$out" ] ||
+  fail "a partition the cluster does not have: exit $status, $(cat "$work/bad.txt"), not exit 2 and no folder"
 python3 "$script" run "$out" $set_name $shards --batch 8 > "$work/submit1.txt" 2>&1 || fail "sbatch: $(cat "$work/submit1.txt")"
 cat "$work/submit1.txt"
 grep -q "^submitted shards 0-5 as job array [0-9]*" "$work/submit1.txt" || fail "the 6 shards were not submitted as one array"
