@@ -57,6 +57,9 @@ import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import summarize_readings  # noqa: E402
+
 SHARD_SCRIPT = os.path.join(HERE, "stream_and_certify_shard.sh")
 BUILD_BIN = os.path.normpath(os.path.join(HERE, "..", "..", "build", "bin"))
 SET = re.compile(r"^(random-integer:[0-9]{1,9}:[0-9]{1,9}|family:[a-z0-9-]+:[0-9]{1,9}:[0-9]{1,9})$")
@@ -244,15 +247,9 @@ def sbatch(arguments):
     return result.stdout.strip().split(";")[0]
 
 
-def ranges(numbers):
+def array_list(numbers):
     """'0-3,7' for [0, 1, 2, 3, 7]: Slurm's --array list."""
-    parts = []
-    for k in numbers:
-        if parts and parts[-1][1] == k - 1:
-            parts[-1][1] = k
-        else:
-            parts.append([k, k])
-    return ",".join(str(a) if a == b else "%d-%d" % (a, b) for a, b in parts)
+    return summarize_readings.ranges(numbers).replace(" ", "")
 
 
 def run_slurm(outdir, e, env, extra):
@@ -265,18 +262,18 @@ def run_slurm(outdir, e, env, extra):
     done = [i for i in range(n) if finished(outdir, i) is not None]
     todo = [i for i in range(n) if i not in done and i not in active]
     print("%s: %d of %d shards finished, %d pending or running (%s)" % (
-        outdir, len(done), n, len(active), ranges(sorted(active)) or "none"))
+        outdir, len(done), n, len(active), array_list(sorted(active)) or "none"))
     if not todo and not active_jobs and os.path.exists(os.path.join(outdir, "summary.md")):
         print("every shard finished and merged: %s" % os.path.join(outdir, "summary.md"))
         return 0
     if pending_merges:
         subprocess.run(["scancel"] + pending_merges, check=False)
     if todo:
-        array = sbatch(["--job-name", name + ".shards", "--array", ranges(todo), "--ntasks", "1", "--cpus-per-task", "1",
+        array = sbatch(["--job-name", name + ".shards", "--array", array_list(todo), "--ntasks", "1", "--cpus-per-task", "1",
                         "--output", os.path.join(outdir, "logs", "shard_%a.log"), "--open-mode", "append"] + extra +
                        ["--wrap", task_command(outdir, "$SLURM_ARRAY_TASK_ID", env)])
         active_jobs.append(array)
-        print("submitted shards %s as job array %s; logs: %s" % (ranges(todo), array, os.path.join(outdir, "logs")))
+        print("submitted shards %s as job array %s; logs: %s" % (array_list(todo), array, os.path.join(outdir, "logs")))
     dependency = ["--dependency", "afterany:" + ":".join(active_jobs)] if active_jobs else []
     merge_job = sbatch(["--job-name", name + ".merge", "--ntasks", "1", "--cpus-per-task", "1",
                         "--output", os.path.join(outdir, "logs", "merge.log"), "--open-mode", "append"] + dependency +
@@ -341,7 +338,7 @@ def run(a):
     elif os.path.exists(outdir) and os.listdir(outdir):
         raise Bad("%s is not empty and holds no experiment.json: give a new OUTDIR" % outdir)
     else:
-        os.makedirs(os.path.join(outdir, "logs"), exist_ok=True)
+        os.makedirs(outdir, exist_ok=True)
         with open(os.path.join(outdir, "experiment.json"), "w") as f:
             json.dump(wanted, f)
             f.write("\n")
