@@ -45,7 +45,7 @@ stop_cluster() {
     (sleep 10 && kill -9 "${daemons[@]}" 2> /dev/null) &
     local killer=$!
     for pid in "${daemons[@]}"; do wait "$pid" 2> /dev/null; done
-    kill $killer 2> /dev/null
+    pkill -P $killer 2> /dev/null; kill $killer 2> /dev/null # and its sleep
   fi
   pkill -9 -f "$work/" 2> /dev/null # anything a job left (slurmstepd, the shards' programs)
   sleep 0.5
