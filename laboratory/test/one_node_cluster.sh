@@ -42,10 +42,13 @@ stop_cluster() {
   [ -z "${SLURM_CONF:-}" ] || scancel --user "$(id -un)" 2> /dev/null
   if [ ${#daemons[@]} -gt 0 ]; then
     kill "${daemons[@]}" 2> /dev/null
-    (sleep 10 && kill -9 "${daemons[@]}" 2> /dev/null) &
-    local killer=$!
-    for pid in "${daemons[@]}"; do wait "$pid" 2> /dev/null; done
-    pkill -P $killer 2> /dev/null; kill $killer 2> /dev/null # and its sleep
+    for _ in $(seq 100); do # up to 10 s; an ended daemon is a zombie until waited for
+      states=$(ps -o stat= -p "$(IFS=,; echo "${daemons[*]}")")
+      grep -qv '^Z' <<< "$states" || break
+      sleep 0.1
+    done
+    kill -9 "${daemons[@]}" 2> /dev/null
+    wait "${daemons[@]}" 2> /dev/null
   fi
   pkill -9 -f "$work/" 2> /dev/null # anything a job left (slurmstepd, the shards' programs)
   sleep 0.5
@@ -184,7 +187,7 @@ for _ in $(seq 600); do
     if grep -q '"tally"' "$out/shard_$i/stream.jsonl" 2> /dev/null && [ ! -e "$out/shard_$i/finished" ]; then
       scancel "${array}_$i"
       for _ in $(seq 100); do
-        squeue --noheader --array --format %i | grep -qx "${array}_$i" || break
+        [[ $'\n'$(squeue --noheader --array --format %i)$'\n' == *$'\n'"${array}_$i"$'\n'* ]] || break
         sleep 0.1
       done
       if [ ! -e "$out/shard_$i/finished" ]; then killed=$i; fi
@@ -202,8 +205,9 @@ grep -q "^shard $killed of $shards not finished; its log: $out/logs/shard_$kille
   fail "the merge job does not name the cancelled shard and its log: $(cat "$out/logs/merge.log")"
 [ ! -e "$out/summary.md" ] || fail "a summary was written with a shard missing"
 grep -q "CANCELLED" "$out/logs/shard_$killed.log" || fail "the cancelled shard's log does not say so"
-python3 "$script" status "$out" | grep -q "^shard $killed: not finished; log $out/logs/shard_$killed.log" ||
-  fail "status does not name the cancelled shard"
+python3 "$script" status "$out" > "$work/status.txt"
+grep -q "^shard $killed: not finished; log $out/logs/shard_$killed.log" "$work/status.txt" ||
+  fail "status does not name the cancelled shard: $(cat "$work/status.txt")"
 
 python3 "$script" run "$out" $set_name $shards --batch 8 > "$work/submit2.txt" 2>&1 || fail "resubmitting: $(cat "$work/submit2.txt")"
 cat "$work/submit2.txt"
