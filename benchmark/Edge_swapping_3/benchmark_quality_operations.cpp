@@ -286,6 +286,10 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
   };
   targeted(ES::Min_max_dihedral_angle_criterion(), ES::TOPOLOGICAL_OPERATIONS, 140,
            "worst first MinMax, topological, target 140 deg");
+  targeted(ES::Min_max_dihedral_angle_criterion(), ES::FLIPS | ES::EDGE_REMOVAL, 140,
+           "worst first MinMax, flips + edge removal, target 140 deg");
+  targeted(ES::Min_max_dihedral_angle_criterion(), ES::EDGE_REMOVAL | ES::MULTI_FACE_REMOVAL, 140,
+           "worst first MinMax, edge + multi-face removal, target 140 deg");
   targeted(ES::Max_min_radius_ratio_criterion(), ES::ALL_OPERATIONS, 0.5,
            "worst first radius ratio, topological + smoothing, target 0.5");
   other(ES::Max_min_dihedral_angle_criterion(), "MaxMin");

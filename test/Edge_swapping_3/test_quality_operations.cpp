@@ -976,6 +976,17 @@ TEST_CASE("The quality driver with a quality target works only on the cells wors
   const auto again = cell_set(some);
   REQUIRE(run(some, 165).number_of_operations() == 0);
   REQUIRE(cell_set(some) == again);
+  // A larger mesh, where most visits are of cells visited before: an
+  // attempt skipped because no cell it reads changed would succeed here.
+  Tr larger;
+  ES::insert_delaunay(larger, random_in_cube(1500, seed));
+  const auto at_140 = run(larger, 140);
+  REQUIRE(at_140.two_step_removals > 0);
+  REQUIRE(at_140.face_removals > 0);
+  REQUIRE(at_140.visits > 2 * at_140.number_of_operations());
+  const auto at_140_cells = cell_set(larger);
+  REQUIRE(run(larger, 140).number_of_operations() == 0);
+  REQUIRE(cell_set(larger) == at_140_cells);
   WARN("MinMax on 400 random points: " << everywhere.number_of_operations() << " operations and "
                                         << everywhere.visits << " visits everywhere, "
                                         << above_165.number_of_operations() << " and " << above_165.visits

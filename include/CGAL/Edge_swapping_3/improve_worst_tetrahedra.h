@@ -198,9 +198,14 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   auto push = [&](Cell_handle c, bool changed) {
     const std::size_t k = slots(c);
     if(changed) queue.forget(k);
-    if(queue.waits(k) || !counted(c)) return;
+    if(queue.waits(k) || queue.is_settled(k) || !counted(c)) return;
     const double s = score(c);
-    if(s >= enough) return;
+    if(s >= enough)
+    {
+      // Its score changes only when it does, and then it is pushed as changed.
+      queue.settle(k, slots.number_of_slots());
+      return;
+    }
     queue.add(k, float(s), slots.number_of_slots());
   };
   auto each_counted_cell = [&](auto f) {
@@ -275,14 +280,23 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const std::size_t failure_slots = tr.number_of_finite_cells() / 8;
   internal::Edge_removal_failures<Tr> failures((operations & EDGE_REMOVAL) ? failure_slots : 0);
   internal::Multi_face_removal_failures<Tr> face_failures((operations & MULTI_FACE_REMOVAL) ? failure_slots : 0);
-  // Two-step removal reads the cells through the ends of the edge: its
-  // failures are remembered with the stamps of the two vertices, which each
-  // change stamps (that of every vertex of a new or moved cell) renews. The
-  // stamps are by vertex slot; a vertex made in a freed slot takes a new stamp.
-  // Besides the failures of single edges, each cell keeps (by slot) the time
-  // at which all its edges failed: an edge whose ends are older needs no new
-  // attempt. Times are counts of changes, plus one (0: never tried), in 32
-  // bits: past 2^32 - 2 changes no stamp moves, and nothing is remembered.
+  // Each change stamps every vertex of a new or moved cell with its time
+  // (every vertex of a removed cell is in a new one). An operation reads only
+  // cells through some vertices, and a change to one of those cells stamps
+  // them: edge removal reads the cells through both ends of its edge (a
+  // change there stamps both), multi-face removal those through either
+  // vertex off its facet, two-step removal those through both ends (the
+  // edge's star) and through an end and a ring vertex (the first steps).
+  // Each cell keeps (by slot) the time at which all its topological
+  // operations failed; an operation whose cells cannot have changed since
+  // fails again and is not tried. A cell made later in the slot has newer
+  // vertices. The infinite vertex has no stamp: the operations through it
+  // (a hull facet's) fail. Stamps are by vertex slot; a vertex made in a
+  // freed slot takes a new stamp. Times are counts of changes, plus one (0:
+  // never tried), in 32 bits: past 2^32 - 2 changes no stamp moves, and
+  // nothing is skipped. Two-step failures of single edges are also
+  // remembered with the stamps of the edge's ends.
+  const bool stamping = (operations & (EDGE_REMOVAL | MULTI_FACE_REMOVAL | TWO_STEP_EDGE_REMOVAL)) != 0;
   internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 4 * failure_slots : 0);
   // Bounds on the best of the stars of two-step removal's steps, 16 bytes a
   // place, a place per eight cells (the driver then holds 1.19 times the
@@ -291,8 +305,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   internal::Edge_removal_bounds<Tr> two_step_bounds((operations & TWO_STEP_EDGE_REMOVAL) ? failure_slots : 0);
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
       tr.tds().vertices());
-  std::vector<std::uint32_t> stamps((operations & TWO_STEP_EDGE_REMOVAL) ? vertex_slots.number_of_slots() : 0, 0);
-  std::vector<std::uint32_t> two_step_tried;
+  std::vector<std::uint32_t> stamps(stamping ? vertex_slots.number_of_slots() : 0, 0);
+  std::vector<std::uint32_t> topology_tried;
   std::uint64_t changes = 0;
   const std::uint64_t last_stamp = std::numeric_limits<std::uint32_t>::max() - 1;
   auto stamp_of = [&](typename Tr::Vertex_handle v) {
@@ -347,10 +361,27 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     ++report.visits;
     created.clear();
     bool improved = false, moved = false;
+    // When the cell's topological operations last all failed (0: never, or
+    // no time is kept), and whether a vertex is older than that.
+    const bool stamped = stamping && changes < last_stamp;
+    const std::uint32_t tried = stamped && entry.slot < topology_tried.size() ? topology_tried[entry.slot] : 0;
+    auto unchanged = [&](typename Tr::Vertex_handle v) { return stamp_of(v) < tried; };
+    auto ring_unchanged = [&](Cell_handle x, int i, int j) {
+      auto circ = tr.incident_cells(x, i, j), done = circ;
+      do
+        for(int k = 0; k < 4; ++k)
+        {
+          const typename Tr::Vertex_handle v = circ->vertex(k);
+          if(v != x->vertex(i) && v != x->vertex(j) && !tr.is_infinite(v) && !unchanged(v)) return false;
+        }
+      while(++circ != done);
+      return true;
+    };
     if(operations & EDGE_REMOVAL)
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
-          if(internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, visitor, maximum_ring,
+          if(!unchanged(c->vertex(i)) && !unchanged(c->vertex(j)) &&
+             internal::remove_edge(tr, typename Tr::Edge(c, i, j), criterion, constraints, visitor, maximum_ring,
                                     created, &failures)
                  .removed())
           {
@@ -360,6 +391,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     if(operations & MULTI_FACE_REMOVAL)
       for(int i = 0; i < 4 && !improved; ++i)
       {
+        const Cell_handle d = c->neighbor(i);
+        if(unchanged(c->vertex(i)) && unchanged(d->vertex(d->index(c)))) continue;
         const auto r =
             internal::remove_faces(tr, typename Tr::Facet(c, i), criterion, constraints, visitor, maximum_ring, created,
                                  &face_failures);
@@ -387,16 +420,14 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         improved = true;
       }
     if((operations & TWO_STEP_EDGE_REMOVAL) && !improved)
-    {
-      if(entry.slot >= two_step_tried.size())
-        two_step_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
-      const std::uint64_t tried = two_step_tried[entry.slot];
-      const bool stamped = changes < last_stamp;
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
         {
-          const std::uint64_t stamp_i = stamp_of(c->vertex(i)), stamp_j = stamp_of(c->vertex(j));
-          if(stamped && tried > (std::max)(stamp_i, stamp_j)) continue;
+          if(unchanged(c->vertex(i)) && unchanged(c->vertex(j))) continue;
+          // With one end older, the edge's star and every star through that
+          // end are as they were; so are the others when no ring vertex is newer.
+          if((unchanged(c->vertex(i)) || unchanged(c->vertex(j))) && ring_unchanged(c, i, j)) continue;
+          const std::uint32_t stamp_i = stamp_of(c->vertex(i)), stamp_j = stamp_of(c->vertex(j));
           const auto key = internal::edge_key<Tr>(c->vertex(i), c->vertex(j));
           const std::uint64_t signature = internal::mix_bits(stamp_i) + internal::mix_bits(stamp_j);
           if(stamped && two_step_failures.find(key, signature) != nullptr) continue;
@@ -407,7 +438,11 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
           if(stamped) two_step_failures.record(key, signature, attempt, improved);
           if(improved) ++report.two_step_removals;
         }
-      if(!improved && stamped) two_step_tried[entry.slot] = std::uint32_t(changes + 1);
+    if(!improved && stamped)
+    {
+      if(entry.slot >= topology_tried.size())
+        topology_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
+      topology_tried[entry.slot] = std::uint32_t(changes + 1);
     }
     if(operations & SMOOTHING)
       for(int i = 0; i < 4 && !improved; ++i)

@@ -45,10 +45,20 @@ public:
   explicit Worst_cell_queue(std::size_t batch) : batch_((std::max)(batch, std::size_t(1))) {}
 
   /// Whether the cell in `slot` waits for a visit, in the heap or outside it.
-  bool waits(std::size_t slot) const { return slot < state_.size() && state_[slot] != idle; }
+  bool waits(std::size_t slot) const { return slot < state_.size() && (state_[slot] == queued || state_[slot] == deferred); }
 
-  /// The cell in `slot` is visited, or changed: it waits no more, and an
-  /// entry of its slot left in the heap is passed over.
+  /// The cell in `slot` needs no visit until it changes (it meets the quality
+  /// target): it is not measured again when pushed.
+  void settle(std::size_t slot, std::size_t slots)
+  {
+    if(slot >= state_.size()) state_.resize((std::max)(slots, slot + 1), idle);
+    state_[slot] = settled;
+  }
+
+  bool is_settled(std::size_t slot) const { return slot < state_.size() && state_[slot] == settled; }
+
+  /// The cell in `slot` is visited, or changed: it waits no more (nor is it
+  /// settled), and an entry of its slot left in the heap is passed over.
   void forget(std::size_t slot)
   {
     if(slot < state_.size()) state_[slot] = idle;
@@ -113,7 +123,7 @@ public:
   }
 
 private:
-  static constexpr std::uint8_t idle = 0, queued = 1, deferred = 2;
+  static constexpr std::uint8_t idle = 0, queued = 1, deferred = 2, settled = 3;
   static constexpr std::size_t sample_size = 1024;
 
   // Every `stride_`-th score offered is kept; when the sample holds twice
