@@ -23,6 +23,7 @@
 #include <functional>
 #include <map>
 #include <random>
+#include <optional>
 #include <set>
 
 using namespace test;
@@ -916,9 +917,7 @@ TEST_CASE("The worst-first queue hands out the waiting cells in the order of one
       {
         if(queue.empty_heap())
         {
-          const bool any = queue.refill([&](auto f) {
-            for(std::size_t k = 0; k < slots; ++k) f(k, [&] { return score[k]; });
-          });
+          const bool any = queue.refill([&](std::size_t k) { return std::optional<float>(score[k]); });
           REQUIRE(any == !waiting.empty());
           if(!any) break;
           ++refills;

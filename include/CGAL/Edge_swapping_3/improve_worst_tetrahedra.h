@@ -40,6 +40,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -195,9 +196,24 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   // of the cells is in the heap at a time (`Worst_cell_queue`).
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Cell_range> slots(tr.tds().cells());
   internal::Worst_cell_queue queue((std::max)(tr.number_of_finite_cells() / 8, std::size_t(1024)));
+  // The operations are made in two rounds. Every visit tries the quick
+  // ones (edge removal, multi-face removal, flips); a cell they leave stuck
+  // waits in `later` for the others (two-step removal, smoothing, vertex
+  // removal and insertion), which run when no cell waits for the quick
+  // ones: the costly attempts are made on a neighbourhood the quick ones have
+  // settled, not again at each of its changes. When either round is empty,
+  // a visit tries all in turn.
+  const unsigned quick_operations = operations & (FLIPS | EDGE_REMOVAL | MULTI_FACE_REMOVAL);
+  const unsigned later_operations = operations & ~quick_operations;
+  const bool two_rounds = quick_operations != 0 && later_operations != 0;
+  internal::Worst_cell_queue later((std::max)(tr.number_of_finite_cells() / 8, std::size_t(1024)));
   auto push = [&](Cell_handle c, bool changed) {
     const std::size_t k = slots(c);
-    if(changed) queue.forget(k);
+    if(changed)
+    {
+      queue.forget(k);
+      later.forget(k);
+    }
     if(queue.waits(k) || queue.is_settled(k) || !counted(c)) return;
     const double s = score(c);
     if(s >= enough)
@@ -208,9 +224,12 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
     }
     queue.add(k, float(s), slots.number_of_slots());
   };
-  auto each_counted_cell = [&](auto f) {
-    for(Cell_handle c : tr.finite_cell_handles())
-      if(counted(c)) f(slots(c), [&] { return float(score(c)); });
+  auto score_of_slot = [&](std::size_t k) -> std::optional<float> {
+    typename Tr::Cell* cell = slots.item(k);
+    if(cell == nullptr) return std::nullopt;
+    const Cell_handle c = tr.tds().cells().iterator_to(*cell);
+    if(!counted(c)) return std::nullopt;
+    return float(score(c));
   };
   // The cells whose operations may have changed, each pushed once. With edge
   // removal alone: those sharing an edge with a new cell (the ring of that
@@ -247,9 +266,11 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
           around.push_back(c);
           for(int i = 0; i < 4; ++i)
           {
+            // A neighbour through v is walked, and so pushed, unless the
+            // walk ends here or has been there.
             const Cell_handle n = c->neighbor(i);
-            around.push_back(n);
-            if(depth < maximum_ring + 2 && c->vertex(i) != v && seen.insert(n)) walk.emplace_back(n, depth + 1);
+            if(c->vertex(i) == v || depth == maximum_ring + 2) around.push_back(n);
+            else if(seen.insert(n)) walk.emplace_back(n, depth + 1);
           }
         }
       }
@@ -306,9 +327,14 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
       tr.tds().vertices());
   std::vector<std::uint32_t> stamps(stamping ? vertex_slots.number_of_slots() : 0, 0);
-  std::vector<std::uint32_t> topology_tried;
+  // By slot: when the quick operations, and when two-step removal, last failed.
+  std::vector<std::uint32_t> quick_tried, two_step_tried;
   std::uint64_t changes = 0;
   const std::uint64_t last_stamp = std::numeric_limits<std::uint32_t>::max() - 1;
+  auto record_failure = [&](std::vector<std::uint32_t>& tried, std::size_t slot) {
+    if(slot >= tried.size()) tried.resize((std::max)(slots.number_of_slots(), slot + 1), 0);
+    tried[slot] = std::uint32_t(changes + 1);
+  };
   auto stamp_of = [&](typename Tr::Vertex_handle v) {
     const std::size_t k = vertex_slots(v);
     return k < stamps.size() ? stamps[k] : std::uint32_t(0);
@@ -336,9 +362,14 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   std::size_t moves_at_sweep = 0;
   for(;;)
   {
+    bool later_round = false;
     if(queue.empty_heap())
     {
-      if(queue.refill(each_counted_cell)) continue;
+      if(queue.refill(score_of_slot)) continue;
+      later_round = !later.empty_heap() || later.refill(score_of_slot);
+    }
+    if(queue.empty_heap() && !later_round)
+    {
       if(report.smoothing_moves == moves_at_sweep) break;
       moves_at_sweep = report.smoothing_moves;
       for(Cell_handle c : tr.finite_cell_handles()) push(c, false);
@@ -349,22 +380,26 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       report.ending = CYCLE_LIMIT_REACHED;
       break;
     }
-    const internal::Worst_cell_entry entry = queue.pop();
+    internal::Worst_cell_queue& from = later_round ? later : queue;
+    const internal::Worst_cell_entry entry = from.pop();
     typename Tr::Cell* cell = slots.item(entry.slot);
-    if(cell == nullptr || !queue.queued_at(entry.slot)) continue;
+    if(cell == nullptr || !from.queued_at(entry.slot)) continue;
     const Cell_handle c = tr.tds().cells().iterator_to(*cell);
     if(!counted(c)) continue;
     const float now = float(score(c));
     // An older entry of the slot is passed over (NaN: a degenerate cell's measure).
     if(now != entry.score && !(now != now && entry.score != entry.score)) continue;
-    queue.forget(entry.slot);
+    from.forget(entry.slot);
     ++report.visits;
     created.clear();
     bool improved = false, moved = false;
-    // When the cell's topological operations last all failed (0: never, or
-    // no time is kept), and whether a vertex is older than that.
+    // When the cell's quick operations, and its two-step removals, last
+    // failed (0: never, or no time is kept), and whether a vertex is older.
     const bool stamped = stamping && changes < last_stamp;
-    const std::uint32_t tried = stamped && entry.slot < topology_tried.size() ? topology_tried[entry.slot] : 0;
+    auto tried_at = [&](const std::vector<std::uint32_t>& tried) {
+      return stamped && entry.slot < tried.size() ? tried[entry.slot] : std::uint32_t(0);
+    };
+    std::uint32_t tried = tried_at(quick_tried);
     auto unchanged = [&](typename Tr::Vertex_handle v) { return stamp_of(v) < tried; };
     auto ring_unchanged = [&](Cell_handle x, int i, int j) {
       auto circ = tr.incident_cells(x, i, j), done = circ;
@@ -377,7 +412,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
       while(++circ != done);
       return true;
     };
-    if(operations & EDGE_REMOVAL)
+    const bool quick = !later_round, rest = later_round || !two_rounds;
+    if(quick && (operations & EDGE_REMOVAL))
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
           if(!unchanged(c->vertex(i)) && !unchanged(c->vertex(j)) &&
@@ -388,7 +424,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
             ++report.edge_removals;
             improved = true;
           }
-    if(operations & MULTI_FACE_REMOVAL)
+    if(quick && (operations & MULTI_FACE_REMOVAL))
       for(int i = 0; i < 4 && !improved; ++i)
       {
         const Cell_handle d = c->neighbor(i);
@@ -403,7 +439,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
           improved = true;
         }
       }
-    if(flips)
+    if(quick && flips)
       for(int i = 0; i < 4 && !improved; ++i)
       {
         const auto conf = classify_facet(tr, c, i);
@@ -419,7 +455,15 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
         ++report.flips[conf.flip_kind()];
         improved = true;
       }
-    if((operations & TWO_STEP_EDGE_REMOVAL) && !improved)
+    if(quick && quick_operations && !improved && stamped) record_failure(quick_tried, entry.slot);
+    if(quick && two_rounds && !improved)
+    {
+      // Stuck for the quick operations: it waits for the others.
+      if(!later.waits(entry.slot)) later.add(entry.slot, entry.score, slots.number_of_slots());
+      continue;
+    }
+    tried = tried_at(two_step_tried);
+    if(rest && (operations & TWO_STEP_EDGE_REMOVAL) && !improved)
       for(int i = 0; i < 4 && !improved; ++i)
         for(int j = i + 1; j < 4 && !improved; ++j)
         {
@@ -438,12 +482,7 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
           if(stamped) two_step_failures.record(key, signature, attempt, improved);
           if(improved) ++report.two_step_removals;
         }
-    if(!improved && stamped)
-    {
-      if(entry.slot >= topology_tried.size())
-        topology_tried.resize((std::max)(slots.number_of_slots(), std::size_t(entry.slot) + 1), 0);
-      topology_tried[entry.slot] = std::uint32_t(changes + 1);
-    }
+    if((operations & TWO_STEP_EDGE_REMOVAL) && !improved && stamped) record_failure(two_step_tried, entry.slot);
     if(operations & SMOOTHING)
       for(int i = 0; i < 4 && !improved; ++i)
       {

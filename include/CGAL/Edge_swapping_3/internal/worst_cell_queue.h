@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <stdexcept>
 #include <vector>
@@ -52,6 +53,7 @@ public:
   void settle(std::size_t slot, std::size_t slots)
   {
     if(slot >= state_.size()) state_.resize((std::max)(slots, slot + 1), idle);
+    leave(slot);
     state_[slot] = settled;
   }
 
@@ -61,7 +63,9 @@ public:
   /// settled), and an entry of its slot left in the heap is passed over.
   void forget(std::size_t slot)
   {
-    if(slot < state_.size()) state_[slot] = idle;
+    if(slot >= state_.size()) return;
+    leave(slot);
+    state_[slot] = idle;
   }
 
   /// The cell in `slot`, of `score`, waits (`slots` bounds every slot, for the per-slot bytes).
@@ -70,6 +74,7 @@ public:
     if(slot > std::numeric_limits<std::uint32_t>::max())
       throw std::length_error("Edge_swapping_3: more than 2^32 cells");
     if(slot >= state_.size()) state_.resize((std::max)(slots, slot + 1), idle);
+    leave(slot);
     if(!(score >= bound_))
     {
       state_[slot] = queued;
@@ -78,6 +83,7 @@ public:
     else
     {
       state_[slot] = deferred;
+      ++deferred_cells_;
       offer(score);
     }
   }
@@ -97,34 +103,47 @@ public:
 
   /// With the heap empty, raises the bound so that about a batch of the
   /// cells waiting outside it score below, and moves those in.
-  /// `for_each_cell(f)` calls `f(slot, score)` on every cell that may wait,
-  /// `score()` giving its score. False when no cell waits.
-  template <class ForEachCell>
-  bool refill(ForEachCell for_each_cell)
+  /// `score_of(slot)` gives the score of the cell in `slot` (a
+  /// `std::optional<float>`), or nothing when the slot holds no cell that may
+  /// wait any more: the slot then waits no more. False when no cell waits.
+  template <class ScoreOf>
+  bool refill(ScoreOf score_of)
   {
+    if(deferred_cells_ == 0) return false;
     bound_ = next_bound();
     sample_.clear();
     offered_ = 0;
     stride_ = 1;
-    bool any = false;
-    for_each_cell([&](std::size_t slot, auto score) {
-      if(slot >= state_.size() || state_[slot] != deferred) return;
-      any = true;
-      const float s = score();
-      if(!(s >= bound_))
+    // The slots in order: one byte each to read, and only the waiting cells measured.
+    for(std::size_t slot = 0; slot < state_.size(); ++slot)
+    {
+      if(state_[slot] != deferred) continue;
+      const auto s = score_of(slot);
+      if(!s)
+      {
+        state_[slot] = idle;
+        --deferred_cells_;
+      }
+      else if(!(*s >= bound_))
       {
         state_[slot] = queued;
-        heap_.push(Worst_cell_entry{s, std::uint32_t(slot)});
+        --deferred_cells_;
+        heap_.push(Worst_cell_entry{*s, std::uint32_t(slot)});
       }
       else
-        offer(s);
-    });
-    return any;
+        offer(*s);
+    }
+    return !heap_.empty() || deferred_cells_ > 0;
   }
 
 private:
   static constexpr std::uint8_t idle = 0, queued = 1, deferred = 2, settled = 3;
   static constexpr std::size_t sample_size = 1024;
+
+  void leave(std::size_t slot)
+  {
+    if(state_[slot] == deferred) --deferred_cells_;
+  }
 
   // Every `stride_`-th score offered is kept; when the sample holds twice
   // its size, every other one is dropped and the stride doubles.
@@ -159,6 +178,7 @@ private:
   std::priority_queue<Worst_cell_entry, std::deque<Worst_cell_entry>> heap_;
   std::vector<float> sample_;
   std::size_t offered_ = 0, stride_ = 1;
+  std::size_t deferred_cells_ = 0; // cells waiting outside the heap
 };
 
 } // namespace internal
