@@ -123,13 +123,20 @@ def log_path(outdir, i):
 
 
 def finished(outdir, i):
-    """The shard's record once its script ended with 0 or 1, else None."""
+    """The shard's record once its script ended with 0 or 1, else None (a
+    record that is not the task's, damaged or edited, counts as not finished:
+    the shard runs again)."""
     try:
         with open(os.path.join(shard_dir(outdir, i), "finished")) as f:
             record = json.load(f)
-        return record if record.get("status") in (0, 1) else None
     except (OSError, ValueError):
         return None
+    if not isinstance(record, dict) or type(record.get("status")) is not int or record["status"] not in (0, 1):
+        return None
+    seconds = record.get("seconds")
+    if type(seconds) not in (int, float) or not seconds >= 0 or not isinstance(record.get("verdict"), str):
+        return None
+    return record
 
 
 def last_line(path):
