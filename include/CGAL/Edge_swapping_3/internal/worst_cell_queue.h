@@ -2,7 +2,7 @@
 // The worst-first driver's queue: the cells that wait for a visit, taken
 // worst first, with only a batch of them in the heap at a time. The cells
 // that score below a bound are in the heap; the others wait outside it, one
-// byte each, and a sweep over the cells takes in the next batch when the
+// byte each, and a sweep over those bytes takes in the next batch when the
 // heap is empty. Every waiting cell in the heap scores below the bound and
 // every one outside does not, so the cells come out in the order of a heap
 // that held them all: the run is the same, the heap a fraction of the size.
@@ -46,7 +46,10 @@ public:
   explicit Worst_cell_queue(std::size_t batch) : batch_((std::max)(batch, std::size_t(1))) {}
 
   /// Whether the cell in `slot` waits for a visit, in the heap or outside it.
-  bool waits(std::size_t slot) const { return slot < state_.size() && (state_[slot] == queued || state_[slot] == deferred); }
+  bool waits(std::size_t slot) const
+  {
+    return slot < state_.size() && (state_[slot] == queued || state_[slot] == deferred);
+  }
 
   /// The cell in `slot` needs no visit until it changes (it meets the quality
   /// target): it is not measured again when pushed.
