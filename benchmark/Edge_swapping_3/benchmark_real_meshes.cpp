@@ -14,7 +14,8 @@
 //   benchmark_real_meshes MESH...      (.mesh, .msh, .vtu or .ele)
 //
 // Columns: smallest / largest dihedral angle, cells below 10 and above 165
-// degrees, the 1st percentile of the radius ratio 3r/R, cells, seconds of
+// degrees, the same among the cells with no vertex on a boundary or
+// interface triangle ("in"), the 1st percentile of the radius ratio 3r/R, cells, seconds of
 // the optimizer alone (ours: the library call, as for the peers). Then the
 // program `edge_swap` (beside this benchmark) as a user runs it on the file,
 // to each output format, its output checked and compared with the file.
@@ -42,34 +43,11 @@ struct Quality_row
 {
   double smallest = 180, largest = 0, radius_ratio_1st_percentile = 0;
   std::size_t below_10 = 0, above_165 = 0, cells = 0;
+  std::size_t in_below_10 = 0, in_above_165 = 0; // the cells with no vertex on a kept triangle
 };
 
-// The one measure of every row: the cells of the domain (subdomain not 0).
-Quality_row quality(const quality_peers::Cell_mesh& m)
-{
-  Quality_row q;
-  std::vector<double> ratios;
-  for(std::size_t k = 0; k < m.cells.size(); ++k)
-  {
-    if(m.subdomains[k] == 0) continue;
-    const auto& t = m.cells[k];
-    const auto angles = ES::dihedral_angles(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
-    const double lo = *std::min_element(angles.begin(), angles.end());
-    const double hi = *std::max_element(angles.begin(), angles.end());
-    q.smallest = std::min(q.smallest, lo);
-    q.largest = std::max(q.largest, hi);
-    q.below_10 += lo < 10;
-    q.above_165 += hi > 165;
-    ratios.push_back(3 / ES::circumradius_over_inradius(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
-    ++q.cells;
-  }
-  std::sort(ratios.begin(), ratios.end());
-  if(!ratios.empty()) q.radius_ratio_1st_percentile = ratios[ratios.size() / 100];
-  return q;
-}
-
-// The triangles between two subdomains or on the boundary, as sorted triples.
-// The boundary and interface triangles of the domain's cells, by point numbers.
+// The boundary and interface triangles of the domain's cells (subdomain not
+// 0), by point numbers, as sorted triples.
 std::set<std::array<std::size_t, 3>> kept_triangles(const quality_peers::Cell_mesh& m)
 {
   quality_peers::Cell_mesh domain;
@@ -82,6 +60,39 @@ std::set<std::array<std::size_t, 3>> kept_triangles(const quality_peers::Cell_me
     }
   const auto b = quality_peers::boundary_triangles(domain);
   return {b.begin(), b.end()};
+}
+
+// The one measure of every row: the cells of the domain. "In": the cells
+// with no vertex on a boundary or interface triangle of the mesh measured
+// (the input's, where the boundary is kept: boundary smoothing slides its
+// points and vertex removal renumbers them, so they are found again here).
+Quality_row quality(const quality_peers::Cell_mesh& m)
+{
+  Quality_row q;
+  std::vector<char> on_boundary(m.points.size(), 0);
+  for(const auto& t : kept_triangles(m))
+    for(std::size_t i : t) on_boundary[i] = 1;
+  std::vector<double> ratios;
+  for(std::size_t k = 0; k < m.cells.size(); ++k)
+  {
+    if(m.subdomains[k] == 0) continue;
+    const auto& t = m.cells[k];
+    const auto angles = ES::dihedral_angles(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
+    const double lo = *std::min_element(angles.begin(), angles.end());
+    const double hi = *std::max_element(angles.begin(), angles.end());
+    const bool in = !on_boundary[t[0]] && !on_boundary[t[1]] && !on_boundary[t[2]] && !on_boundary[t[3]];
+    q.smallest = std::min(q.smallest, lo);
+    q.largest = std::max(q.largest, hi);
+    q.below_10 += lo < 10;
+    q.above_165 += hi > 165;
+    q.in_below_10 += in && lo < 10;
+    q.in_above_165 += in && hi > 165;
+    ratios.push_back(3 / ES::circumradius_over_inradius(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]));
+    ++q.cells;
+  }
+  std::sort(ratios.begin(), ratios.end());
+  if(!ratios.empty()) q.radius_ratio_1st_percentile = ratios[ratios.size() / 100];
+  return q;
 }
 
 // The same by their points, sorted.
@@ -127,8 +138,9 @@ void row(const std::string& name, const quality_peers::Cell_mesh& input, const q
   const std::string problem = ES::build_numbered_mesh(tr, m);
   const bool kept = same_boundary(r.mesh, input);
   const Quality_row q = quality(r.mesh);
-  std::printf("  %-34s %6.2f / %6.2f %6zu %6zu %7.4f %8zu %8.2f %s%s\n", name.c_str(), q.smallest, q.largest,
-              q.below_10, q.above_165, q.radius_ratio_1st_percentile, q.cells, r.seconds,
+  std::printf("  %-34s %6.2f / %6.2f %6zu %6zu %6zu %6zu %7.4f %8zu %8.2f %s%s\n", name.c_str(), q.smallest,
+              q.largest, q.below_10, q.above_165, q.in_below_10, q.in_above_165, q.radius_ratio_1st_percentile, q.cells,
+              r.seconds,
               problem.empty() ? "" : ("INVALID: " + problem).c_str(), kept ? "" : " BOUNDARY CHANGED");
   std::fflush(stdout);
 }
@@ -246,7 +258,8 @@ int main(int argc, char** argv)
   std::filesystem::create_directories(dir);
   // The program beside this benchmark in the build's bin folder.
   const std::string edge_swap = (std::filesystem::absolute(argv[0]).parent_path() / "edge_swap").string();
-  std::printf("%-36s %15s %6s %6s %7s %8s %8s\n", "", "min / max", "<10", ">165", "rr 1%", "cells", "seconds");
+  std::printf("%-36s %15s %6s %6s %6s %6s %7s %8s %8s\n", "", "min / max", "<10", ">165", "in<10", "in>165", "rr 1%",
+              "cells", "seconds");
   for(int a = 1; a < argc; ++a)
   {
     const std::string path = argv[a];
