@@ -17,7 +17,7 @@
 // dihedral angle 23.21 and 22.83 degrees). A climb that has not gained that
 // much by its first ascent step ends there: such climbs creep (on the
 // Delaunay triangulation of 3,000 random points under the dihedral sine,
-// 48,519 of 67,214 ended without a move), and ending them took 29% to 60%
+// 48,519 of 67,214 ended without a move), and ending them took 28% to 60%
 // off the quality driver's time with smoothing, with fewer bad cells on
 // random points (doc/Edge_swapping_3/benchmarks.md, "Smoothing's first step").
 
