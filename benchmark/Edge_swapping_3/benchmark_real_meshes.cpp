@@ -15,10 +15,11 @@
 //
 // Columns: smallest / largest dihedral angle, cells below 10 and above 165
 // degrees, the same among the cells with no vertex on a boundary or
-// interface triangle ("in"), the 1st percentile of the radius ratio 3r/R, cells, seconds of
-// the optimizer alone (ours: the library call, as for the peers). Then the
-// program `edge_swap` (beside this benchmark) as a user runs it on the file,
-// to each output format, its output checked and compared with the file.
+// interface triangle ("in"), the 1st percentile of the radius ratio 3r/R,
+// cells, seconds of the optimizer alone (ours: the library call, as for the
+// peers). Then the program `edge_swap` (beside this benchmark) as a user runs
+// it on the file, to each output format, its output checked and compared
+// with the file.
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/edge_swapping_3.h>

@@ -312,8 +312,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   // edge's star) and through an end and a ring vertex (the first steps).
   // Each cell keeps (by slot) the times at which its quick operations and
   // its two-step removals last failed; an operation whose cells cannot have
-  // changed since fails again and is not tried. A cell made later in the slot has newer
-  // vertices. The infinite vertex has no stamp: the operations through it
+  // changed since fails again and is not tried. A cell made later in the
+  // slot has newer vertices. The infinite vertex has no stamp: the operations through it
   // (a hull facet's) fail. Stamps are by vertex slot; a vertex made in a
   // freed slot takes a new stamp. Times are counts of changes, plus one (0:
   // never tried), in 32 bits: past 2^32 - 2 changes no stamp moves, and
@@ -323,8 +323,8 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   internal::Edge_removal_failures<Tr> two_step_failures((operations & TWO_STEP_EDGE_REMOVAL) ? 4 * failure_slots : 0);
   // Bounds on the best of the stars of two-step removal's steps, 16 bytes a
   // place, a place per eight cells (the driver then holds 1.25 times the
-  // triangulation at 10^5 points; benchmarks.md): a star that cannot beat a floor is not
-  // solved again.
+  // triangulation at 10^5 points; benchmarks.md): a star that cannot beat a
+  // floor is not solved again.
   internal::Edge_removal_bounds<Tr> two_step_bounds((operations & TWO_STEP_EDGE_REMOVAL) ? failure_slots : 0);
   internal::Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> vertex_slots(
       tr.tds().vertices());
