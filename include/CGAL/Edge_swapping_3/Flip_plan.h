@@ -278,76 +278,98 @@ void glue_inner_facet(Cell_handle c, int i, Cell_handle d, int j, const Constrai
   constraints.set_facet_data(d, j, constraints.free_facet_data());
 }
 
-// An outer facet of a direct flip: the cell across, the data the old cell
-// had on it, and (when the cell across must point to another cell after the
-// flip) the facet's index there. The first new cell of each flip is its
-// first old cell with one vertex replaced, and the second reuses the second
-// old cell: the outer facets they keep, and the pointers to them, stay as
-// they are, so a flip touches the cells around it as CGAL's own flips do.
-template <class Tr, class Constraints>
-struct Direct_outer_facet
+// `d`, a neighbour of `from`, made a neighbour of `to` in its place.
+template <class Cell_handle>
+void relink(Cell_handle d, Cell_handle from, Cell_handle to)
 {
-  typename Tr::Cell_handle cell;
-  int index = -1; // -1: the cell across keeps pointing to the same cell
-  typename Constraints::Facet_data data;
-
-  Direct_outer_facet() = default;
-  Direct_outer_facet(typename Tr::Cell_handle old, int i, bool relinked, const Constraints& constraints)
-      : cell(old->neighbor(i)), index(relinked ? cell->index(old) : -1), data(constraints.facet_data(old, i)) {}
-
-  void glue(typename Tr::Cell_handle c, int i, const Constraints& constraints) const
-  {
-    c->set_neighbor(i, cell);
-    if(index >= 0) cell->set_neighbor(index, c);
-    constraints.set_facet_data(c, i, data);
-  }
-};
+  d->set_neighbor(d->index(from), to);
+}
 
 // The 2-3 flip at the facet `(c, i)` (plan_flip_2_3's, which it needs not
-// be given): new cell m is c with its vertex j[m] replaced by the apex e;
-// across its facet j[m] is the old outside of c, across its facet i that of
-// n (n's facet opposite c's vertex j[m]), and across its facet j[m'] the new
-// cell m'. New cell 0 is c (one vertex set: its facet j[0] stays), new cell
-// 1 is n (n's facet opposite c's vertex j[1] keeps its outside); each vertex
-// ends pointing to the last new cell that holds it, as with the flip by
-// matching.
+// be given), with j0 < j1 < j2 the other indices and e the apex across:
+// the new cells are c with its vertex j0, j1 or j2 replaced by e, made of
+// c (one vertex set: its facet j0 keeps its outside), of n (n's facet
+// opposite c's vertex j1 keeps its outside) and of a new cell m. Across
+// the facet jk of each is the old outside of c there, across its facet i
+// the outside of n opposite c's vertex jk, across the others the other new
+// cells. Each vertex ends pointing to the last new cell that holds it, as
+// with the flip by matching. What it needs of c and n is read before either
+// is written, with no loop and no index searched twice: this is the
+// flip of the Lawson pass and of flip insertion, as fast as CGAL's
+// `flip_flippable` (benchmarks.md). Declared inline because GCC keeps it
+// out of line otherwise, and the call then costs about a sixth of the
+// flip's instructions.
 template <class Tr, class Constraints>
-int execute_flip_2_3(Tr& tr, typename Tr::Cell_handle c, int i, std::array<typename Tr::Cell_handle, 4>& created,
-                     const Constraints& constraints)
+inline int execute_flip_2_3(Tr& tr, typename Tr::Cell_handle c, int i,
+                            std::array<typename Tr::Cell_handle, 4>& created, const Constraints& constraints)
 {
-  typedef Direct_outer_facet<Tr, Constraints> Outer;
-  const auto n = c->neighbor(i);
-  const auto e = n->vertex(n->index(c));
-  std::array<int, 3> j;
-  for(int k = 0, m = 0; k < 4; ++k)
-    if(k != i) j[m++] = k;
-  std::array<Outer, 3> of_c, of_n;
-  for(int m = 1; m < 3; ++m) of_c[m] = Outer(c, j[m], true, constraints);
-  for(int m = 0; m < 3; ++m) of_n[m] = Outer(n, n->index(c->vertex(j[m])), m != 1, constraints);
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  const Cell_handle n = c->neighbor(i);
+  const int in = n->index(c);
+  const Vertex_handle e = n->vertex(in);
+  // j0 < j1 < j2: the indices other than i.
+  const int j0 = (i == 0) ? 1 : 0, j1 = (i <= 1) ? 2 : 1, j2 = (i <= 2) ? 3 : 2;
+  const Vertex_handle vi = c->vertex(i), v0 = c->vertex(j0), v1 = c->vertex(j1), v2 = c->vertex(j2);
+  const int n0 = n->index(v0), n1 = n->index(v1), n2 = 6 - in - n0 - n1;
+  const Cell_handle oc1 = c->neighbor(j1), oc2 = c->neighbor(j2);
+  const Cell_handle on0 = n->neighbor(n0), on1 = n->neighbor(n1), on2 = n->neighbor(n2);
+  const auto dc1 = constraints.facet_data(c, j1), dc2 = constraints.facet_data(c, j2);
+  const auto dn0 = constraints.facet_data(n, n0), dn1 = constraints.facet_data(n, n1),
+             dn2 = constraints.facet_data(n, n2);
+  const auto free_data = constraints.free_facet_data();
   const auto cell_data = constraints.cell_data(c);
-  auto t1 = tuple_of<Tr>(c), t2 = t1;
-  t1[j[1]] = e;
-  t2[j[2]] = e;
 
+  const Cell_handle m = tr.tds().create_cell(c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3));
+  m->set_vertex(j2, e);
+  n->set_vertices(c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3));
+  n->set_vertex(j1, e);
+  c->set_vertex(j0, e);
+  c->tds_data().clear(); // a reused cell is a new cell: no mark
+  n->tds_data().clear();
+  constraints.set_cell_data(c, cell_data);
+  constraints.set_cell_data(n, cell_data);
+  constraints.set_cell_data(m, cell_data);
+
+  // c: across i the outside of n opposite v0; across j1 and j2 the new cells.
+  c->set_neighbor(i, on0);
+  relink(on0, n, c);
+  constraints.set_facet_data(c, i, dn0);
+  c->set_neighbor(j1, n);
+  constraints.set_facet_data(c, j1, free_data);
+  c->set_neighbor(j2, m);
+  constraints.set_facet_data(c, j2, free_data);
+  // n: across j1 the outside of c there; across i its own outside opposite
+  // v1, which points to n already; across j0 and j2 the new cells.
+  n->set_neighbor(j1, oc1);
+  relink(oc1, c, n);
+  constraints.set_facet_data(n, j1, dc1);
+  n->set_neighbor(i, on1);
+  constraints.set_facet_data(n, i, dn1);
+  n->set_neighbor(j0, c);
+  constraints.set_facet_data(n, j0, free_data);
+  n->set_neighbor(j2, m);
+  constraints.set_facet_data(n, j2, free_data);
+  // m: across j2 the outside of c there, across i that of n opposite v2.
+  m->set_neighbor(j2, oc2);
+  relink(oc2, c, m);
+  constraints.set_facet_data(m, j2, dc2);
+  m->set_neighbor(i, on2);
+  relink(on2, n, m);
+  constraints.set_facet_data(m, i, dn2);
+  m->set_neighbor(j0, c);
+  constraints.set_facet_data(m, j0, free_data);
+  m->set_neighbor(j1, n);
+  constraints.set_facet_data(m, j1, free_data);
+
+  v0->set_cell(m);
+  v1->set_cell(m);
+  vi->set_cell(m);
+  e->set_cell(m);
+  v2->set_cell(n);
   created[0] = c;
   created[1] = n;
-  n->set_vertices(t1[0], t1[1], t1[2], t1[3]);
-  c->set_vertex(j[0], e);
-  created[2] = tr.tds().create_cell(t2[0], t2[1], t2[2], t2[3]);
-  for(int m = 0; m < 3; ++m)
-  {
-    if(m < 2) created[m]->tds_data().clear(); // a reused cell is a new cell: no mark
-    constraints.set_cell_data(created[m], cell_data);
-  }
-
-  for(int m = 0; m < 3; ++m)
-  {
-    if(m > 0) of_c[m].glue(created[m], j[m], constraints);
-    of_n[m].glue(created[m], i, constraints);
-    for(int l = m + 1; l < 3; ++l) glue_inner_facet(created[m], j[l], created[l], j[m], constraints);
-  }
-  for(const auto v : {t2[j[0]], t2[j[1]], t2[i], e}) v->set_cell(created[2]);
-  t1[j[2]]->set_cell(created[1]);
+  created[2] = m;
   return 3;
 }
 
@@ -358,54 +380,70 @@ int execute_flip_2_3(Tr& tr, typename Tr::Cell_handle c, int i, std::array<typen
 // i and k those of n and t opposite the replaced vertex, and across the last
 // the other new cell. New cell 0 is c (one vertex set: its facet b stays),
 // new cell 1 reuses the old cell that follows c around the edge (a, b), n or
-// t, keeping the outside of its outer facet; the third is deleted.
+// t, keeping the outside of its outer facet; the third is deleted. Written
+// and declared as the 2-3 flip is.
 template <class Tr, class Constraints>
-int execute_flip_3_2(Tr& tr, typename Tr::Cell_handle c, int i, int k,
-                     std::array<typename Tr::Cell_handle, 4>& created, const Constraints& constraints)
+inline int execute_flip_3_2(Tr& tr, typename Tr::Cell_handle c, int i, int k,
+                            std::array<typename Tr::Cell_handle, 4>& created, const Constraints& constraints)
 {
-  typedef Direct_outer_facet<Tr, Constraints> Outer;
-  const auto n = c->neighbor(i), t = c->neighbor(k);
-  const auto e = n->vertex(n->index(c));
-  int a = -1, b = -1;
-  for(int m = 0; m < 4; ++m)
-    if(m != i && m != k) (a < 0 ? a : b) = m;
+  typedef typename Tr::Cell_handle Cell_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  const Cell_handle n = c->neighbor(i), t = c->neighbor(k);
+  const Vertex_handle e = n->vertex(n->index(c));
+  // a < b: the two indices other than i and k.
+  static constexpr signed char lower_other[4][4] = {{-1, 2, 1, 1}, {2, -1, 0, 0}, {1, 0, -1, 0}, {1, 0, 0, -1}};
+  const int a = lower_other[i][k], b = 6 - i - k - a;
   const bool n_next = (Tr::next_around_edge(a, b) == i);
-  const auto second = n_next ? n : t, third = n_next ? t : n;
-  // r[0] = b is replaced in new cell 0, r[1] = a in new cell 1.
-  const std::array<int, 2> r = {b, a};
-  std::array<Outer, 2> of_c, of_n, of_t;
-  of_c[1] = Outer(c, a, true, constraints);
-  for(int m = 0; m < 2; ++m)
-  {
-    const auto v = c->vertex(r[m]);
-    of_n[m] = Outer(n, n->index(v), m == 0 || second != n, constraints);
-    of_t[m] = Outer(t, t->index(v), m == 0 || second != t, constraints);
-  }
+  const Cell_handle second = n_next ? n : t, third = n_next ? t : n;
+  const Vertex_handle va = c->vertex(a), vb = c->vertex(b), vd = c->vertex(i), vk = c->vertex(k);
+  const int na = n->index(va), nb = n->index(vb), ta = t->index(va), tb = t->index(vb);
+  const Cell_handle oc = c->neighbor(a);
+  const Cell_handle on0 = n->neighbor(nb), ot0 = t->neighbor(tb), on1 = n->neighbor(na), ot1 = t->neighbor(ta);
+  const auto dc = constraints.facet_data(c, a);
+  const auto dn0 = constraints.facet_data(n, nb), dt0 = constraints.facet_data(t, tb),
+             dn1 = constraints.facet_data(n, na), dt1 = constraints.facet_data(t, ta);
+  const auto free_data = constraints.free_facet_data();
   const auto cell_data = constraints.cell_data(c);
-  auto t1 = tuple_of<Tr>(c);
-  const auto va = t1[a], vb = t1[b], vd = t1[i], vk = t1[k];
-  t1[a] = e;
 
+  second->set_vertices(c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3));
+  second->set_vertex(a, e);
+  c->set_vertex(b, e);
+  c->tds_data().clear(); // a reused cell is a new cell: no mark
+  second->tds_data().clear();
+  constraints.set_cell_data(c, cell_data);
+  constraints.set_cell_data(second, cell_data);
+
+  // c: across i and k the outsides of n and t opposite b.
+  c->set_neighbor(i, on0);
+  relink(on0, n, c);
+  constraints.set_facet_data(c, i, dn0);
+  c->set_neighbor(k, ot0);
+  relink(ot0, t, c);
+  constraints.set_facet_data(c, k, dt0);
+  // second: across a the outside of c there, across i and k those of n and
+  // t opposite a (the one of second itself points to it already).
+  second->set_neighbor(a, oc);
+  relink(oc, c, second);
+  constraints.set_facet_data(second, a, dc);
+  second->set_neighbor(i, on1);
+  if(second != n) relink(on1, n, second);
+  constraints.set_facet_data(second, i, dn1);
+  second->set_neighbor(k, ot1);
+  if(second != t) relink(ot1, t, second);
+  constraints.set_facet_data(second, k, dt1);
+  c->set_neighbor(a, second);
+  constraints.set_facet_data(c, a, free_data);
+  second->set_neighbor(b, c);
+  constraints.set_facet_data(second, b, free_data);
+
+  vb->set_cell(second);
+  vd->set_cell(second);
+  vk->set_cell(second);
+  e->set_cell(second);
+  va->set_cell(c);
+  tr.tds().delete_cell(third);
   created[0] = c;
   created[1] = second;
-  second->set_vertices(t1[0], t1[1], t1[2], t1[3]);
-  c->set_vertex(b, e);
-  for(int m = 0; m < 2; ++m)
-  {
-    created[m]->tds_data().clear(); // a reused cell is a new cell: no mark
-    constraints.set_cell_data(created[m], cell_data);
-  }
-
-  for(int m = 0; m < 2; ++m)
-  {
-    if(m > 0) of_c[m].glue(created[m], r[m], constraints);
-    of_n[m].glue(created[m], i, constraints);
-    of_t[m].glue(created[m], k, constraints);
-  }
-  glue_inner_facet(created[0], a, created[1], b, constraints);
-  for(const auto v : {vb, vd, vk, e}) v->set_cell(created[1]);
-  va->set_cell(created[0]);
-  tr.tds().delete_cell(third);
   return 2;
 }
 
