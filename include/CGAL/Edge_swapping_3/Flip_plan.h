@@ -295,10 +295,10 @@ void relink(Cell_handle d, Cell_handle from, Cell_handle to)
 // cells. Each vertex ends pointing to the last new cell that holds it, as
 // with the flip by matching. What it needs of c and n is read before either
 // is written, with no loop and no index searched twice: this is the
-// flip of the Lawson pass and of flip insertion, as fast as CGAL's
-// `flip_flippable` (benchmarks.md). Declared inline because GCC keeps it
-// out of line otherwise, and the call then costs about a sixth of the
-// flip's instructions.
+// flip of the Lawson pass and of flip insertion, and it takes CGAL's
+// `flip_flippable`'s time to within a few percent (benchmarks.md).
+// Declared inline because GCC 12 keeps it out of line otherwise, and the
+// call then costs about 15% of the flip's instructions.
 template <class Tr, class Constraints>
 inline int execute_flip_2_3(Tr& tr, typename Tr::Cell_handle c, int i,
                             std::array<typename Tr::Cell_handle, 4>& created, const Constraints& constraints)
