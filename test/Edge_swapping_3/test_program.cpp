@@ -5,6 +5,8 @@
 #include "test_common.h"
 #include <CGAL/Edge_swapping_3/IO/tetgen.h>
 #include <CGAL/Edge_swapping_3/triangulation_from_cells.h>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -226,7 +228,13 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --criterion minmax-dihedral --operations flips,",
        "optimize " + in + out + " --criterion min-edges --operations edge-removal",
        "optimize " + in + out + " --criterion minmax-dihedral --operations multi-face",
-       "optimize " + in + out + " --criterion radius-ratio --operations flips --history " + w.path("h.csv")})
+       "optimize " + in + out + " --criterion radius-ratio --operations flips --history " + w.path("h.csv"),
+       "optimize " + in + out + " --criterion minmax-dihedral --time-limit 0",
+       "optimize " + in + out + " --criterion minmax-dihedral --time-limit -2",
+       "optimize " + in + out + " --criterion minmax-dihedral --time-limit nan",
+       "optimize " + in + out + " --criterion minmax-dihedral --time-limit soon",
+       "optimize " + in + out + " --time-limit 5",
+       "optimize " + in + out + " --criterion minmax-dihedral --operations paper-flips --time-limit 5"})
   {
     INFO("edge_swap " << args);
     const Run r = w.run(args);
@@ -386,6 +394,72 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("minmax-dihedral: converged after") != std::string::npos);
   REQUIRE(Workdir::slurp(w.path("h.csv")).rfind("cycle,swaps_2_3,", 0) == 0);
+}
+
+TEST_CASE("optimize --time-limit and Ctrl-C end the worst-first driver with the mesh so far - valid and written",
+          "[program][time limit]")
+{
+  Workdir w;
+  write_random_node(w, "cube.node", 300, 13);
+  const std::string start = "optimize " + w.path("cube.node") + " --start delaunay --criterion minmax-dihedral -o ";
+  {
+    // A limit that has passed before the first visit: the start triangulation, written.
+    const Run r = w.run(start + w.path("now.ele") + " --time-limit 1e-9 --stats " + w.path("s.json"));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.out.find("worst first (all): time limit reached") != std::string::npos);
+    const std::string stats = Workdir::slurp(w.path("s.json"));
+    REQUIRE(stats.find("\"ending\": \"time limit reached\"") != std::string::npos);
+    REQUIRE(stats.find("\"time_limit\": 1e-09") != std::string::npos);
+    REQUIRE(w.run("check " + w.path("now.ele")).exit_code == 0);
+  }
+  {
+    // A limit the run does not reach changes nothing.
+    const Run limited = w.run(start + w.path("limited.ele") + " --time-limit 1000");
+    const Run free = w.run(start + w.path("free.ele"));
+    REQUIRE(limited.exit_code == 0);
+    REQUIRE(free.exit_code == 0);
+    REQUIRE(limited.out.find("converged") != std::string::npos);
+    REQUIRE(Workdir::slurp(w.path("limited.ele")) == Workdir::slurp(w.path("free.ele")));
+  }
+  SECTION("Ctrl-C")
+  {
+    // 20,000 points with every operation run for many seconds: once the
+    // driver says where it is, SIGINT ends it after the operation under way.
+    const unsigned seed = 5;
+    INFO("seed " << seed);
+    write_random_node(w, "many.node", 20000, seed);
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if(child == 0)
+    {
+      std::freopen(w.path("stdout").c_str(), "w", stdout);
+      std::freopen(w.path("stderr").c_str(), "w", stderr);
+      const std::string in = w.path("many.node"), out = w.path("cut.mesh");
+      ::execl(EDGE_SWAP_BINARY, EDGE_SWAP_BINARY, "optimize", in.c_str(), "--criterion", "dihedral-sine", "-o",
+              out.c_str(), static_cast<char*>(nullptr));
+      std::_Exit(127);
+    }
+    bool working = false;
+    for(int k = 0; k < 1200 && !working; ++k) // two minutes at most
+    {
+      ::usleep(100000);
+      working = Workdir::slurp(w.path("stderr")).find("worst first: ") != std::string::npos;
+    }
+    ::kill(child, SIGINT);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    const std::string out = Workdir::slurp(w.path("stdout")), err = Workdir::slurp(w.path("stderr"));
+    INFO("stdout: " << out << "\nstderr: " << err);
+    REQUIRE(working);
+    REQUIRE(WIFEXITED(status));
+    REQUIRE(WEXITSTATUS(status) == 130);
+    REQUIRE(out.find("worst first (all): interrupted") != std::string::npos);
+    const Run c = w.run("check " + w.path("cut.mesh"));
+    INFO(c.out << c.err);
+    REQUIRE(c.exit_code == 0);
+    REQUIRE(c.out.find("valid triangulation") != std::string::npos);
+  }
 }
 
 TEST_CASE("optimize's default criterion: the dihedral sine for a mesh - Delaunay for a point set - the helper and --paper",

@@ -19,12 +19,15 @@
 #include <CGAL/Edge_swapping_3/vertex_insertion.h>
 #include <CGAL/Edge_swapping_3/vertex_removal.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <random>
 #include <optional>
 #include <set>
+#include <thread>
 
 using namespace test;
 
@@ -991,6 +994,105 @@ TEST_CASE("The quality driver with a quality target works only on the cells wors
                                         << above_165.number_of_operations() << " and " << above_165.visits
                                         << " above 165 degrees; cells above 165: " << poor_cells(none, true)
                                         << " -> " << poor_cells(all, true) << " and " << poor_cells(some, true));
+}
+
+namespace {
+
+// Sets a stop flag at the `after`-th change (a replacement or a move), and
+// sleeps `pause` at each: Ctrl-C and a slow run, at places the test fixes.
+struct Stopping_visitor : ES::Default_replacement_visitor
+{
+  std::atomic<bool>* flag = nullptr;
+  std::size_t after = std::size_t(-1);
+  std::chrono::milliseconds pause{0};
+  std::size_t changes = 0;
+
+  void change()
+  {
+    if(++changes >= after) flag->store(true);
+    if(pause.count() > 0) std::this_thread::sleep_for(pause);
+  }
+  template <class T>
+  void after_replacement(const T&, const std::vector<typename T::Cell_handle>&) { change(); }
+  template <class T>
+  void after_move(const T&, typename T::Vertex_handle, const typename T::Point&) { change(); }
+};
+
+} // namespace
+
+TEST_CASE("The quality driver ends at a stop flag or a time limit - the mesh valid - its vertices and region kept - "
+          "never worse",
+          "[quality driver][time limit]")
+{
+  const unsigned seed = 12;
+  INFO("seed " << seed);
+  const auto points = random_in_cube(500, seed);
+  const ES::Max_min_dihedral_angle_criterion criterion;
+  for(unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS)})
+  {
+    CAPTURE(operations);
+    Tr full;
+    ES::insert_delaunay(full, points);
+    const auto volume = exact_volume(full);
+    const auto start = cell_set(full);
+    const auto whole = ES::improve_worst_tetrahedra(full, criterion, ES::parameters::operations(operations));
+    REQUIRE(whole.ending == ES::CONVERGED);
+    REQUIRE(whole.number_of_operations() > 40);
+
+    // Stopped at the 20th change: the operation under way ends, no other begins.
+    auto stopped = [&](Tr& tr) {
+      std::atomic<bool> flag{false};
+      Stopping_visitor visitor;
+      visitor.flag = &flag;
+      visitor.after = 20;
+      const auto r = ES::improve_worst_tetrahedra(
+          tr, criterion, ES::parameters::operations(operations, ES::parameters::stop_flag(&flag)).visitor(std::ref(visitor)));
+      REQUIRE(r.ending == ES::INTERRUPTED);
+      // A two-step removal is two changes: the 20th may be its first step.
+      REQUIRE((visitor.changes == 20 || visitor.changes == 21));
+      return r;
+    };
+    Tr tr, again;
+    ES::insert_delaunay(tr, points);
+    ES::insert_delaunay(again, points);
+    const auto r = stopped(tr);
+    REQUIRE(r.number_of_operations() <= 20);
+    REQUIRE(r.number_of_operations() < whole.number_of_operations());
+    REQUIRE(tr.is_valid());
+    REQUIRE(tr.number_of_vertices() == points.size());
+    require_same_region(tr, volume);
+    REQUIRE(r.worst_after >= r.worst_before);
+    REQUIRE(r.worst_after == worst_smallest_angle(tr));
+    REQUIRE(cell_set(tr) != start);
+    // The same input and flag give the same mesh.
+    stopped(again);
+    REQUIRE(cell_set(again) == cell_set(tr));
+
+    // A time limit that has passed before the first visit: nothing changes.
+    Tr untouched;
+    ES::insert_delaunay(untouched, points);
+    const auto none = ES::improve_worst_tetrahedra(
+        untouched, criterion, ES::parameters::operations(operations).maximum_running_time(0.0));
+    REQUIRE(none.ending == ES::TIME_LIMIT_REACHED);
+    REQUIRE(none.number_of_operations() == 0);
+    REQUIRE(cell_set(untouched) == start);
+
+    // A run slowed to 20 ms a change reaches a limit of 0.2 s partway.
+    Tr slow;
+    ES::insert_delaunay(slow, points);
+    Stopping_visitor sleeper;
+    sleeper.pause = std::chrono::milliseconds(20);
+    const auto cut = ES::improve_worst_tetrahedra(
+        slow, criterion, ES::parameters::operations(operations).maximum_running_time(0.2).visitor(std::ref(sleeper)));
+    REQUIRE(cut.ending == ES::TIME_LIMIT_REACHED);
+    REQUIRE(cut.number_of_operations() > 0);
+    REQUIRE(cut.number_of_operations() < whole.number_of_operations());
+    REQUIRE(cut.seconds >= 0.2);
+    REQUIRE(slow.is_valid());
+    REQUIRE(slow.number_of_vertices() == points.size());
+    require_same_region(slow, volume);
+    REQUIRE(cut.worst_after >= cut.worst_before);
+  }
 }
 
 TEST_CASE("The quality driver keeps the subdomains and the constrained facets of a domain mesh", "[quality driver]")

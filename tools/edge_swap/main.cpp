@@ -73,6 +73,10 @@ int main(int argc, char** argv)
                        "worst-first driver: keep (no operation makes a dihedral angle smaller than the input's "
                        "smallest or larger than its largest) or free (the criterion alone decides)")
       ->check(CLI::IsMember({"keep", "free"}));
+  auto* time_limit = optimize->add_option("--time-limit", opt.time_limit,
+                                          "worst-first driver: end after this many seconds with the mesh so far "
+                                          "(valid, and written; the report says \"time limit reached\"); Ctrl-C "
+                                          "does the same at any time (exit status 130)");
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 
@@ -154,6 +158,7 @@ int main(int argc, char** argv)
     {
       opt.start_given = start->count() > 0;
       opt.quality_target_given = target->count() > 0;
+      opt.time_limit_given = time_limit->count() > 0;
       opt.angle_range_given = angle_range->count() > 0;
       opt.flip_driver_options_given = perturb->count() > 0 || max_cycles->count() > 0;
       return run_optimize(opt);

@@ -4,6 +4,7 @@
 #ifndef EDGE_SWAP_OPTIMIZE_COMMAND_H
 #define EDGE_SWAP_OPTIMIZE_COMMAND_H
 
+#include "interruption.h"
 #include "mesh_files.h"
 #include "progress.h"
 #include <CGAL/edge_swapping_3.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
@@ -30,6 +32,8 @@ struct Optimize_options
   bool flip_driver_options_given = false; ///< `--perturb` or `--max-cycles`, which only the flip driver reads
   double quality_target = 0;          ///< `--quality-target`, when `quality_target_given`
   bool quality_target_given = false;
+  double time_limit = 0;              ///< `--time-limit`, seconds, when `time_limit_given`
+  bool time_limit_given = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
 };
@@ -150,6 +154,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
   const std::size_t vertices_before = ES::number_of_mesh_vertices(tr);
   const std::size_t cells_before = ES::number_of_mesh_cells(tr);
   namespace np = ES::parameters;
+  std::optional<Interruption_scope> interruption(std::in_place);
+  const double time_limit = o.time_limit_given ? o.time_limit : HUGE_VAL;
   const ES::Quality_report report = ES::with_mesh_constraints(tr, in, [&](const auto& constraints) {
     return with_criterion(o.criterion, [&](const auto& criterion) {
       if constexpr(!ES::Is_worst_tetrahedron_criterion<std::decay_t<decltype(criterion)>>::value)
@@ -158,14 +164,17 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
       {
         typedef std::decay_t<decltype(criterion)> Criterion;
         const auto settings = np::keep_dihedral_angle_range(o.angle_range == "keep",
-            np::operations(operations, np::mesh_constraints(constraints,
-                CGAL::parameters::visitor(Worst_first_visitor<Criterion>(criterion, in)))));
+            np::operations(operations, np::stop_flag(interruption->flag(), np::mesh_constraints(constraints,
+                CGAL::parameters::visitor(Worst_first_visitor<Criterion>(criterion, in))
+                    .maximum_running_time(time_limit)))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
       }
     });
   });
+  // Ctrl-C while the files are written ends the program (no file is left half written).
+  interruption.reset();
   Output_files files;
   add_mesh_files(files, o.output, tr, in);
   if(!o.stats.empty())
@@ -190,6 +199,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
                           {"worst_after", report.worst_after},
                           {"seconds", report.seconds}};
       if(o.quality_target_given) j["quality_target"] = o.quality_target;
+      if(o.time_limit_given) j["time_limit"] = o.time_limit;
       out << j.dump(2) << '\n';
     });
   files.commit();
@@ -204,7 +214,8 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
               << vertices_before << " -> " << ES::number_of_mesh_vertices(tr) << ")";
   std::cout << "; worst "
             << report.worst_before << " -> " << report.worst_after << "; cells " << cells_before << " -> " << ES::number_of_mesh_cells(tr) << "; " << report.seconds << " s\n";
-  return 0;
+  // Interrupted: the mesh so far is written, and the status says it was cut short (128 + SIGINT, as a shell says).
+  return report.ending == ES::INTERRUPTED ? 130 : 0;
 }
 
 /// The criterion of `optimize` when `--criterion` is not given: the
@@ -279,6 +290,11 @@ inline int run_optimize(const Optimize_options& given)
                       "paper-flips)");
   if(o.quality_target_given && !std::isfinite(o.quality_target))
     throw Usage_error("--quality-target must be a finite number");
+  if(o.time_limit_given && operations == 0)
+    throw Usage_error("--time-limit sets the worst-first driver (a quality --criterion, --operations other than "
+                      "paper-flips)");
+  if(o.time_limit_given && !(std::isfinite(o.time_limit) && o.time_limit > 0))
+    throw Usage_error("--time-limit must be a positive number of seconds");
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
                       "worst-first driver (--operations " + options.operations + ")" + defaulted);

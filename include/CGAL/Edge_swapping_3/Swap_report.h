@@ -94,13 +94,16 @@ enum Swap_ending
 {
   CONVERGED,           ///< nothing left to do (for Delaunay: and every facet is Delaunay)
   STUCK,               ///< Delaunay only: no swap possible, but some facet is not Delaunay
-  CYCLE_LIMIT_REACHED  ///< still swapping after `number_of_iterations` rounds (possibly cycling)
+  CYCLE_LIMIT_REACHED, ///< still swapping after `number_of_iterations` rounds (possibly cycling)
+  /// `improve_worst_tetrahedra` only: still improving when `maximum_running_time` ran out
+  TIME_LIMIT_REACHED,
+  INTERRUPTED          ///< `improve_worst_tetrahedra` only: its `stop_flag` was set
 };
 
 /// The name of `e`, for reports.
 inline const char* swap_ending_name(Swap_ending e)
 {
-  static const char* names[] = {"converged", "stuck", "cycle limit reached"};
+  static const char* names[] = {"converged", "stuck", "cycle limit reached", "time limit reached", "interrupted"};
   return names[e];
 }
 

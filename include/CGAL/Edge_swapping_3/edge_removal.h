@@ -23,6 +23,7 @@
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/internal/failed_attempts.h>
+#include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -266,20 +267,22 @@ bool star_is_constrained(const Tr& tr, const Edge_star<Tr>& star, const Constrai
 /// `remove_edge` on a star already gathered. The best triangulation of the
 /// ring must beat `required` (a value of the measure) beyond the
 /// tolerance; by default, the worst of the cells it replaces.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
-                                     const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                     const Constraints& constraints, Visitor& visitor,
-                                     std::vector<typename Tr::Cell_handle>& created, bool better_only = false)
+template <class Context>
+Edge_removal_report remove_edge_star(const Context& op, const Edge_star<typename Context::Triangulation>& star,
+                                     bool better_only = false)
 {
+  typedef typename Context::Triangulation Tr;
   typedef typename Tr::Vertex_handle Vertex_handle;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
   typedef std::array<Vertex_handle, 4> Tuple;
   CGAL_precondition(tr.dimension() == 3);
 
   Edge_removal_report report;
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
-  if(star_is_constrained(tr, star, constraints))
+  if(star_is_constrained(tr, star, op.constraints))
   {
     report.outcome = EDGE_CONSTRAINED;
     return report;
@@ -308,8 +311,8 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
                                       : report.quality_after > bar * (1 + tolerance);
   if(!better) { report.outcome = NO_IMPROVEMENT; return report; }
 
-  const auto cells = replace_cells(tr, star.cells, best.cells(), constraints, visitor);
-  created.insert(created.end(), cells.begin(), cells.end());
+  const auto cells = replace_cells(tr, star.cells, best.cells(), op.constraints, op.visitor);
+  op.created.insert(op.created.end(), cells.begin(), cells.end());
   report.new_cells = int(cells.size());
   report.steps = 1;
   report.outcome = EDGE_REMOVED;
@@ -321,28 +324,26 @@ Edge_removal_report remove_edge_star(Tr& tr, const Edge_star<Tr>& star,
 template <class Tr>
 using Edge_removal_failures = Failure_cache<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
 
-/// `remove_edge` with its settings spelled out; the new cells (finite and
-/// infinite) are appended to `created`. With `failures`, a star already
+/// `remove_edge` in an operation context; the new cells (finite and
+/// infinite) are appended to `op.created`. With `failures`, a star already
 /// tried is not tried again, and only triangulations that beat the star are
 /// looked for (`remove_edge_star`'s `better_only`).
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
-                                const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                const Constraints& constraints, Visitor& visitor, int maximum,
-                                std::vector<typename Tr::Cell_handle>& created,
-                                Edge_removal_failures<Tr>* failures = nullptr)
+template <class Context>
+Edge_removal_report remove_edge(const Context& op, const typename Context::Triangulation::Edge& e,
+                                Edge_removal_failures<typename Context::Triangulation>* failures = nullptr)
 {
-  CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(e));
+  typedef typename Context::Triangulation Tr;
+  CGAL_precondition(op.tr.dimension() == 3 && !op.tr.is_infinite(e));
   Edge_removal_report report;
-  const Edge_star<Tr> star(tr, e, maximum);
+  const Edge_star<Tr> star(op.tr, e, op.maximum_ring);
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
-  if(report.ring_size > maximum) { report.outcome = RING_TOO_LARGE; return report; }
-  if(failures == nullptr) return remove_edge_star(tr, star, criterion, constraints, visitor, created);
+  if(report.ring_size > op.maximum_ring) { report.outcome = RING_TOO_LARGE; return report; }
+  if(failures == nullptr) return remove_edge_star(op, star);
   const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
-  const std::uint64_t signature = star.signature(tr);
+  const std::uint64_t signature = star.signature(op.tr);
   if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
-  report = remove_edge_star(tr, star, criterion, constraints, visitor, created, true);
+  report = remove_edge_star(op, star, true);
   failures->record(key, signature, report, report.removed());
   return report;
 }
@@ -378,7 +379,7 @@ Edge_removal_report remove_edge(Tr& tr, const typename Tr::Edge& e,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> created;
-    return internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
+    return internal::remove_edge(internal::make_operation_context(tr, criterion, constraints, visitor, maximum, created), e);
   });
 }
 

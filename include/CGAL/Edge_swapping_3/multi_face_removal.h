@@ -24,6 +24,7 @@
 #include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <CGAL/Edge_swapping_3/internal/failed_attempts.h>
+#include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <algorithm>
 #include <array>
@@ -213,11 +214,12 @@ template <class Tr>
 using Multi_face_removal_failures = Failure_cache<Facet_key<Tr>, Facet_key_hash, Multi_face_removal_report>;
 
 /// The best disk of an explored sandwich, made when it improves.
-template <class Tr, class Sandwich, class Score, class Constraints, class Visitor>
-Multi_face_removal_report decide_removal(Tr& tr, Sandwich& sandwich, const Score& score, bool larger_is_worse,
-                                         double tolerance, const Constraints& constraints, Visitor& visitor,
-                                         std::vector<typename Tr::Cell_handle>& created)
+template <class Context, class Sandwich, class Score>
+Multi_face_removal_report decide_removal(const Context& op, Sandwich& sandwich, const Score& score)
 {
+  typedef typename Context::Triangulation Tr;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  const double tolerance = op.criterion.relative_tolerance;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
@@ -252,23 +254,25 @@ Multi_face_removal_report decide_removal(Tr& tr, Sandwich& sandwich, const Score
                                       : report.quality_after > report.quality_before * (1 + tolerance);
   if(!better) { report.outcome = NO_FACE_IMPROVEMENT; return report; }
 
-  const auto cells = replace_cells(tr, old_cells, new_cells, constraints, visitor);
-  created.insert(created.end(), cells.begin(), cells.end());
+  const auto cells = replace_cells(op.tr, old_cells, new_cells, op.constraints, op.visitor);
+  op.created.insert(op.created.end(), cells.begin(), cells.end());
   report.faces = m;
   report.new_cells = int(cells.size());
   report.outcome = FACES_REMOVED;
   return report;
 }
 
-/// `remove_faces` with its settings spelled out; the new cells are appended
-/// to `created`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
-                                       const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                       const Constraints& constraints, Visitor& visitor, int maximum_faces,
-                                       std::vector<typename Tr::Cell_handle>& created,
-                                       Multi_face_removal_failures<Tr>* failures = nullptr)
+/// `remove_faces` in an operation context (its ring limit is the most
+/// triangles explored); the new cells are appended to `op.created`.
+template <class Context>
+Multi_face_removal_report remove_faces(const Context& op, const typename Context::Triangulation::Facet& f,
+                                       Multi_face_removal_failures<typename Context::Triangulation>* failures = nullptr)
 {
+  typedef typename Context::Triangulation Tr;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
+  const auto& constraints = op.constraints;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
@@ -307,12 +311,12 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
     root.cu = c;
     root.cw = d;
   }
-  Sandwich sandwich(tr, u, w, root, maximum_faces, score, may_go_on);
+  Sandwich sandwich(tr, u, w, root, op.maximum_ring, score, may_go_on);
   // A facet tried before, with the same cells around: the same failure.
   const Facet_key<Tr> key = facet_key<Tr>(c, f.second);
   if(failures != nullptr)
     if(const Multi_face_removal_report* known = failures->find(key, sandwich.signature())) return *known;
-  report = decide_removal(tr, sandwich, score, larger_is_worse, criterion.relative_tolerance, constraints, visitor, created);
+  report = decide_removal(op, sandwich, score);
   if(failures != nullptr) failures->record(key, sandwich.signature(), report, report.removed());
   return report;
 }
@@ -346,7 +350,7 @@ Multi_face_removal_report remove_faces(Tr& tr, const typename Tr::Facet& f,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> created;
-    return internal::remove_faces(tr, f, criterion, constraints, visitor, maximum, created);
+    return internal::remove_faces(internal::make_operation_context(tr, criterion, constraints, visitor, maximum, created), f);
   });
 }
 

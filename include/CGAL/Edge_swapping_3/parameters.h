@@ -39,6 +39,7 @@ enum round_visitor_t { round_visitor };
 enum number_of_threads_t { number_of_threads };
 enum visit_visitor_t { visit_visitor };
 enum helper_reading_t { helper_reading };
+enum stop_flag_t { stop_flag };
 
 } // namespace internal_np
 
@@ -107,6 +108,10 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(move_on_flat_boundary)
 /// vertices only at cells with a dihedral angle, in degrees, below the first
 /// or above the second (default 30 and 140, as Stellar's results are read).
 CGAL_EDGE_SWAPPING_3_PARAMETER(vertex_change_angles)
+
+/// `const std::atomic<bool>*`: `improve_worst_tetrahedra` ends after the
+/// operation under way once the flag reads true (default: no flag).
+CGAL_EDGE_SWAPPING_3_PARAMETER(stop_flag)
 
 /// `Tr::Cell_handle`: where the walk of `insert_by_swapping` starts (default: anywhere).
 CGAL_EDGE_SWAPPING_3_PARAMETER(hint)

@@ -97,13 +97,17 @@ using Edge_removal_bounds = Value_cache<Edge_key<Tr>, Edge_key_hash>;
 /// to succeed. `created` receives the cells of both steps that remain. The
 /// attempt reads only cells through an end of `e` (and their points). With
 /// `bounds`, a bound on the best of each star of either step is remembered.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
-                                             const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                             const Constraints& constraints, Visitor& visitor, int maximum,
-                                             std::vector<typename Tr::Cell_handle>& created,
-                                             Edge_removal_bounds<Tr>* bounds = nullptr)
+template <class Context>
+Edge_removal_report remove_edge_in_two_steps(const Context& op, const typename Context::Triangulation::Edge& e,
+                                             Edge_removal_bounds<typename Context::Triangulation>* bounds = nullptr)
 {
+  typedef typename Context::Triangulation Tr;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
+  const auto& constraints = op.constraints;
+  const int maximum = op.maximum_ring;
+  std::vector<typename Tr::Cell_handle>& created = op.created;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef typename Tr::Edge Edge;
@@ -170,13 +174,13 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
     after.ring = ring_after(tr, star, k, step1->cells());
     if(after.ring.size() < 3 || int(after.ring.size()) > maximum || !beats_floor(after, step2)) continue;
     // Both steps are known to succeed: make them.
-    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1->cells(), constraints, visitor);
+    const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1->cells(), constraints, op.visitor);
     const Cell_handle through = *std::find_if(first.begin(), first.end(),
                                               [&](Cell_handle c) { return c->has_vertex(a) && c->has_vertex(b); });
     const Edge_star<Tr> second(tr, Edge(through, through->index(a), through->index(b)), maximum);
     CGAL_assertion(second.ring.size() == after.ring.size() &&
                    std::is_permutation(second.ring.begin(), second.ring.end(), after.ring.begin()));
-    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2->cells(), constraints, visitor);
+    const std::vector<Cell_handle> last = replace_cells(tr, second.cells, step2->cells(), constraints, op.visitor);
     const std::size_t before_count = created.size();
     for(Cell_handle c : first)
       if(std::find(second.cells.begin(), second.cells.end(), c) == second.cells.end()) created.push_back(c);
@@ -228,9 +232,10 @@ Edge_removal_report remove_edge_in_two_steps(Tr& tr, const typename Tr::Edge& e,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> created;
-    const Edge_removal_report plain = internal::remove_edge(tr, e, criterion, constraints, visitor, maximum, created);
+    const auto op = internal::make_operation_context(tr, criterion, constraints, visitor, maximum, created);
+    const Edge_removal_report plain = internal::remove_edge(op, e);
     if(plain.removed() || plain.outcome == RING_TOO_LARGE || plain.outcome == EDGE_CONSTRAINED) return plain;
-    return internal::remove_edge_in_two_steps(tr, e, criterion, constraints, visitor, maximum, created);
+    return internal::remove_edge_in_two_steps(op, e);
   });
 }
 

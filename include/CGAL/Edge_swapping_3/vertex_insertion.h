@@ -29,6 +29,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Named_function_parameters.h>
@@ -97,13 +98,17 @@ struct Cavity_tree
 
 /// `insert_vertex` with its settings spelled out; the new cells are
 /// appended to `created`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Vertex_insertion_report insert_vertex(Tr& tr, typename Tr::Cell_handle c,
-                               const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                               const Constraints& constraints, Visitor& visitor, int depth,
-                               std::vector<typename Tr::Cell_handle>& created,
-                               typename Tr::Vertex_handle* made_vertex = nullptr)
+template <class Context>
+Vertex_insertion_report insert_vertex(const Context& op, typename Context::Triangulation::Cell_handle c, int depth,
+                                      typename Context::Triangulation::Vertex_handle* made_vertex = nullptr)
 {
+  typedef typename Context::Triangulation Tr;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
+  const auto& constraints = op.constraints;
+  auto& visitor = op.visitor;
+  std::vector<typename Tr::Cell_handle>& created = op.created;
   typedef typename Tr::Geom_traits::Point_3 Point;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -405,7 +410,8 @@ Vertex_insertion_report insert_vertex(Tr& tr, typename Tr::Cell_handle c,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> created;
-    return internal::insert_vertex(tr, c, criterion, constraints, visitor, internal::default_cavity_depth, created);
+    return internal::insert_vertex(internal::make_operation_context(tr, criterion, constraints, visitor, 0, created), c,
+                                   internal::default_cavity_depth);
   });
 }
 

@@ -20,6 +20,7 @@
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Edge_swapping_3/vertex_smoothing.h>
@@ -58,12 +59,16 @@ namespace internal {
 
 /// `remove_vertex` with its settings spelled out; the new cells are appended
 /// to `created`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Vertex_removal_report remove_vertex(Tr& tr, typename Tr::Vertex_handle v,
-                                    const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                                    const Constraints& constraints, Visitor& visitor,
-                                    std::vector<typename Tr::Cell_handle>& created)
+template <class Context>
+Vertex_removal_report remove_vertex(const Context& op, typename Context::Triangulation::Vertex_handle v)
 {
+  typedef typename Context::Triangulation Tr;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
+  const auto& constraints = op.constraints;
+  auto& visitor = op.visitor;
+  std::vector<typename Tr::Cell_handle>& created = op.created;
   typedef typename Tr::Geom_traits::Point_3 Point;
   typedef typename Tr::Cell_handle Cell_handle;
   typedef typename Tr::Vertex_handle Vertex_handle;
@@ -202,7 +207,7 @@ Vertex_removal_report remove_vertex(Tr& tr, typename Tr::Vertex_handle v,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     std::vector<typename Tr::Cell_handle> created;
-    return internal::remove_vertex(tr, v, criterion, constraints, visitor, created);
+    return internal::remove_vertex(internal::make_operation_context(tr, criterion, constraints, visitor, 0, created), v);
   });
 }
 

@@ -27,6 +27,7 @@
 #include <CGAL/Edge_swapping_3/Mesh_constraints.h>
 #include <CGAL/Edge_swapping_3/internal/boundary_motion.h>
 #include <CGAL/Edge_swapping_3/internal/bare_point.h>
+#include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/Quality_criteria.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
@@ -227,14 +228,21 @@ bool is_smoothable(const Tr& tr, const std::vector<typename Tr::Cell_handle>& st
   return !star.empty();
 }
 
-/// `smooth_vertex` with its settings spelled out; the cells around the
-/// vertex are appended to `star_cells`.
-template <class Tr, class Measure, bool larger_is_worse, class Constraints, class Visitor>
-Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
-                               const Worst_tetrahedron_criterion<Measure, larger_is_worse>& criterion,
-                               const Constraints& constraints, Visitor& visitor, int maximum_steps,
-                               std::vector<typename Tr::Cell_handle>& star_cells, bool on_flat_boundary = false)
+/// `smooth_vertex` in an operation context (its ring limit and new cells
+/// are not used: a move makes no cell); the cells around the vertex are
+/// appended to `star_cells`.
+template <class Context>
+Smoothing_report smooth_vertex(const Context& op, typename Context::Triangulation::Vertex_handle v, int maximum_steps,
+                               std::vector<typename Context::Triangulation::Cell_handle>& star_cells,
+                               bool on_flat_boundary = false)
 {
+  typedef typename Context::Triangulation Tr;
+  typedef typename Context::Measure Measure;
+  constexpr bool larger_is_worse = Context::larger_is_worse;
+  Tr& tr = op.tr;
+  const auto& criterion = op.criterion;
+  const auto& constraints = op.constraints;
+  auto& visitor = op.visitor;
   typedef typename Tr::Geom_traits::Point_3 Point;
   CGAL_precondition(tr.dimension() == 3 && !tr.is_infinite(v));
   Smoothing_report report;
@@ -397,8 +405,9 @@ Smoothing_report smooth_vertex(Tr& tr, typename Tr::Vertex_handle v,
   auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   const bool on_flat_boundary = choose_parameter(get_parameter(np, internal_np::move_on_flat_boundary), false);
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
-    std::vector<typename Tr::Cell_handle> star;
-    return internal::smooth_vertex(tr, v, criterion, constraints, visitor, steps, star, on_flat_boundary);
+    std::vector<typename Tr::Cell_handle> star, created;
+    return internal::smooth_vertex(internal::make_operation_context(tr, criterion, constraints, visitor, 0, created), v,
+                                   steps, star, on_flat_boundary);
   });
 }
 
