@@ -325,26 +325,43 @@ template <class Tr>
 using Edge_removal_failures = Failure_cache<Edge_key<Tr>, Edge_key_hash, Edge_removal_report>;
 
 /// `remove_edge` in an operation context; the new cells (finite and
-/// infinite) are appended to `op.created`. With `failures`, a star already
-/// tried is not tried again, and only triangulations that beat the star are
-/// looked for (`remove_edge_star`'s `better_only`).
+/// infinite) are appended to `op.created`.
 template <class Context>
-Edge_removal_report remove_edge(const Context& op, const typename Context::Triangulation::Edge& e,
-                                Edge_removal_failures<typename Context::Triangulation>* failures = nullptr)
+Edge_removal_report remove_edge(const Context& op, const typename Context::Triangulation::Edge& e)
 {
   typedef typename Context::Triangulation Tr;
   CGAL_precondition(op.tr.dimension() == 3 && !op.tr.is_infinite(e));
-  Edge_removal_report report;
   const Edge_star<Tr> star(op.tr, e, op.maximum_ring);
+  if(int(star.cells.size()) <= op.maximum_ring) return remove_edge_star(op, star);
+  Edge_removal_report report;
   report.ring_size = int(star.cells.size());
   report.on_hull = star.on_hull;
-  if(report.ring_size > op.maximum_ring) { report.outcome = RING_TOO_LARGE; return report; }
-  if(failures == nullptr) return remove_edge_star(op, star);
-  const Edge_key<Tr> key = edge_key<Tr>(star.a, star.b);
-  const std::uint64_t signature = star.signature(op.tr);
-  if(const Edge_removal_report* known = failures->find(key, signature)) return *known;
-  report = remove_edge_star(op, star, true);
-  failures->record(key, signature, report, report.removed());
+  report.outcome = RING_TOO_LARGE;
+  return report;
+}
+
+/// `remove_edge`, its failures remembered in `failures` under `signature`,
+/// which the caller makes so that it changes whenever a cell through both
+/// ends of `e` changes (the quality driver's stamps of the two ends): a
+/// failure remembered there is returned without a look at the star, and
+/// only triangulations that beat the star are looked for
+/// (`remove_edge_star`'s `better_only`).
+template <class Context>
+Edge_removal_report remove_edge(const Context& op, const typename Context::Triangulation::Edge& e,
+                                Edge_removal_failures<typename Context::Triangulation>& failures,
+                                std::uint64_t signature)
+{
+  typedef typename Context::Triangulation Tr;
+  CGAL_precondition(op.tr.dimension() == 3 && !op.tr.is_infinite(e));
+  const Edge_key<Tr> key = edge_key<Tr>(e.first->vertex(e.second), e.first->vertex(e.third));
+  if(const Edge_removal_report* known = failures.find(key, signature)) return *known;
+  const Edge_star<Tr> star(op.tr, e, op.maximum_ring);
+  Edge_removal_report report;
+  report.ring_size = int(star.cells.size());
+  report.on_hull = star.on_hull;
+  if(report.ring_size > op.maximum_ring) report.outcome = RING_TOO_LARGE;
+  else report = remove_edge_star(op, star, true);
+  failures.record(key, signature, report, report.removed());
   return report;
 }
 

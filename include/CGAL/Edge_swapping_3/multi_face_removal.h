@@ -97,15 +97,8 @@ public:
     : tr_(tr), u_(u), w_(w), maximum_(maximum_faces), score_(score), may_go_on_(may_go_on)
   {
     nodes_.push_back(root);
-    read(root.cu);
-    read(root.cw);
     for(int k = 0; k < 3; ++k) explore(0, k);
   }
-
-  /// A hash of the cells the exploration read (their vertices and their
-  /// positions): the same cells at the same place give the same tree, and
-  /// the same removal.
-  std::uint64_t signature() const { return signature_; }
 
   /// Finds the best disk (dynamic programming over the tree).
   void solve()
@@ -124,16 +117,6 @@ public:
   void best(std::vector<int>& triangles, std::vector<Tuple>& new_cells) const { collect(0, triangles, new_cells); }
 
 private:
-  void read(Cell_handle c)
-  {
-    std::array<std::uint64_t, 4> v;
-    for(int i = 0; i < 4; ++i) v[i] = vertex_signature(tr_, c->vertex(i));
-    std::sort(v.begin(), v.end());
-    std::uint64_t h = 0;
-    for(std::uint64_t x : v) h = mix_bits(h ^ x);
-    signature_ += h;
-  }
-
   // The subtree beyond edge k of node n.
   void explore(int n, int k)
   {
@@ -168,8 +151,6 @@ private:
     const Node& node = nodes_[n];
     const Vertex_handle p = node.t[k], q = node.t[(k + 1) % 3], r0 = node.t[(k + 2) % 3];
     const Cell_handle cu = node.cu->neighbor(node.cu->index(r0)), cw = node.cw->neighbor(node.cw->index(r0));
-    read(cu);
-    read(cw);
     if(tr_.is_infinite(cu) || tr_.is_infinite(cw)) return -1;
     const Vertex_handle r = cu->vertex(6 - cu->index(p) - cu->index(q) - cu->index(u_));
     if(!cw->has_vertex(r)) return -1;
@@ -205,7 +186,6 @@ private:
   const May_go_on& may_go_on_;
   std::vector<Node> nodes_;
   double value_ = -HUGE_VAL;
-  std::uint64_t signature_ = 0;
 };
 
 /// The facets where multi-face removal failed, with the signature of the
@@ -265,8 +245,7 @@ Multi_face_removal_report decide_removal(const Context& op, Sandwich& sandwich, 
 /// `remove_faces` in an operation context (its ring limit is the most
 /// triangles explored); the new cells are appended to `op.created`.
 template <class Context>
-Multi_face_removal_report remove_faces(const Context& op, const typename Context::Triangulation::Facet& f,
-                                       Multi_face_removal_failures<typename Context::Triangulation>* failures = nullptr)
+Multi_face_removal_report remove_faces(const Context& op, const typename Context::Triangulation::Facet& f)
 {
   typedef typename Context::Triangulation Tr;
   constexpr bool larger_is_worse = Context::larger_is_worse;
@@ -312,12 +291,25 @@ Multi_face_removal_report remove_faces(const Context& op, const typename Context
     root.cw = d;
   }
   Sandwich sandwich(tr, u, w, root, op.maximum_ring, score, may_go_on);
-  // A facet tried before, with the same cells around: the same failure.
-  const Facet_key<Tr> key = facet_key<Tr>(c, f.second);
-  if(failures != nullptr)
-    if(const Multi_face_removal_report* known = failures->find(key, sandwich.signature())) return *known;
-  report = decide_removal(op, sandwich, score);
-  if(failures != nullptr) failures->record(key, sandwich.signature(), report, report.removed());
+  return decide_removal(op, sandwich, score);
+}
+
+/// `remove_faces`, its failures remembered in `failures` under `signature`,
+/// which the caller makes so that it changes whenever a cell through either
+/// vertex off the facet changes (the quality driver's stamps of the two;
+/// the removal reads no other cell): a failure remembered there is returned
+/// without exploring the sandwich. Both sides of a facet share it.
+template <class Context>
+Multi_face_removal_report remove_faces(const Context& op, const typename Context::Triangulation::Facet& f,
+                                       Multi_face_removal_failures<typename Context::Triangulation>& failures,
+                                       std::uint64_t signature)
+{
+  typedef typename Context::Triangulation Tr;
+  if(op.tr.is_infinite(f.first) || op.tr.is_infinite(f.first->neighbor(f.second))) return remove_faces(op, f);
+  const Facet_key<Tr> key = facet_key<Tr>(f.first, f.second);
+  if(const Multi_face_removal_report* known = failures.find(key, signature)) return *known;
+  const Multi_face_removal_report report = remove_faces(op, f);
+  failures.record(key, signature, report, report.removed());
   return report;
 }
 

@@ -301,18 +301,25 @@ private:
     if(operations_ & EDGE_REMOVAL)
       for(int i = 0; i < 4; ++i)
         for(int j = i + 1; j < 4; ++j)
-          if(!unchanged(c->vertex(i)) && !unchanged(c->vertex(j)) &&
-             remove_edge(op_, typename Tr::Edge(c, i, j), &failures_).removed())
+        {
+          const Vertex_handle a = c->vertex(i), b = c->vertex(j);
+          if(unchanged(a) || unchanged(b)) continue;
+          const typename Tr::Edge e(c, i, j);
+          const auto r = stamped_ ? remove_edge(op_, e, failures_, directed_stamp_signature(a, b)) : remove_edge(op_, e);
+          if(r.removed())
           {
             ++report_.edge_removals;
             return true;
           }
+        }
     if(operations_ & MULTI_FACE_REMOVAL)
       for(int i = 0; i < 4; ++i)
       {
         const Cell_handle d = c->neighbor(i);
-        if(unchanged(c->vertex(i)) && unchanged(d->vertex(d->index(c)))) continue;
-        const auto r = remove_faces(op_, typename Tr::Facet(c, i), &face_failures_);
+        const Vertex_handle u = c->vertex(i), w = d->vertex(d->index(c));
+        if(unchanged(u) && unchanged(w)) continue;
+        const typename Tr::Facet f(c, i);
+        const auto r = stamped_ ? remove_faces(op_, f, face_failures_, directed_stamp_signature(u, w)) : remove_faces(op_, f);
         if(r.removed())
         {
           ++report_.face_removals;
@@ -367,9 +374,8 @@ private:
         // With one end older, the edge's star and every star through that
         // end are as they were; so are the others when no ring vertex is newer.
         if((unchanged(c->vertex(i)) || unchanged(c->vertex(j))) && ring_unchanged(i, j)) continue;
-        const std::uint32_t stamp_i = stamp_of(c->vertex(i)), stamp_j = stamp_of(c->vertex(j));
         const auto key = edge_key<Tr>(c->vertex(i), c->vertex(j));
-        const std::uint64_t signature = mix_bits(stamp_i) + mix_bits(stamp_j);
+        const std::uint64_t signature = stamp_signature(c->vertex(i), c->vertex(j));
         if(stamped_ && two_step_failures_.find(key, signature) != nullptr) continue;
         const auto attempt = remove_edge_in_two_steps(op_, typename Tr::Edge(c, i, j), &two_step_bounds_);
         const bool removed = attempt.removed();
@@ -480,6 +486,21 @@ private:
   {
     const std::size_t k = vertex_slots_(v);
     return k < stamps_.size() ? stamps_[k] : std::uint32_t(0);
+  }
+
+  // The failure tables' signature of an attempt that reads only cells
+  // through `a` or `b` (or through both): it changes with every change there.
+  std::uint64_t stamp_signature(Vertex_handle a, Vertex_handle b)
+  {
+    return mix_bits(stamp_of(a)) + mix_bits(stamp_of(b));
+  }
+
+  // The same, told apart from the attempt from the other end: that one
+  // orders its ring or its sandwich otherwise, and may end otherwise (the
+  // last bits of a measure depend on the order of the points).
+  std::uint64_t directed_stamp_signature(Vertex_handle from, Vertex_handle to)
+  {
+    return mix_bits(mix_bits(stamp_of(from)) ^ std::uint64_t(address_of(from))) + mix_bits(stamp_of(to));
   }
 
   std::uint32_t tried_at(const std::vector<std::uint32_t>& tried, std::size_t slot) const
