@@ -25,6 +25,7 @@
 #include <CGAL/Edge_swapping_3/internal/failed_attempts.h>
 #include <CGAL/Edge_swapping_3/internal/operation_context.h>
 #include <CGAL/Edge_swapping_3/internal/replace_cells.h>
+#include <boost/container/small_vector.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -68,6 +69,12 @@ struct Edge_removal_report
 
 namespace internal {
 
+/// The storage of stars and ring triangulations: on the stack up to a ring
+/// of 16 (the default ring limit is 10), so that the many attempts that
+/// fail allocate nothing.
+template <class T, std::size_t n = 16>
+using Star_vector = boost::container::small_vector<T, n>;
+
 /// The cells around edge (a, b) and the ring of vertices s_0 ... s_{n-1}
 /// around it, turning so that cell k is (a, b, s_k, s_{k+1}) with
 /// orientation(a, b, s_k, s_{k+1}) NEGATIVE (decided from the cells' own
@@ -80,8 +87,8 @@ struct Edge_star
   typedef typename Tr::Vertex_handle Vertex_handle;
 
   Vertex_handle a, b;
-  std::vector<Cell_handle> cells;
-  std::vector<Vertex_handle> ring;
+  Star_vector<Cell_handle> cells;
+  Star_vector<Vertex_handle> ring;
   bool on_hull = false;
 
   /// A star to be filled by hand (a ring that the mesh does not hold yet).
@@ -172,12 +179,13 @@ class Ring_triangulation
 public:
   typedef typename Tr::Vertex_handle Vertex_handle;
   typedef std::array<Vertex_handle, 4> Tuple;
+  typedef Star_vector<Tuple, 32> Tuples;
 
   Ring_triangulation(const Tr& tr, const Edge_star<Tr>& star, const Score& score, double floor = -HUGE_VAL)
     : n_(int(star.ring.size())), best_(n_ * n_, -HUGE_VAL), split_(n_ * n_, -1)
   {
     const auto& s = star.ring;
-    std::vector<Vertex_handle> others(s.begin(), s.end());
+    Star_vector<Vertex_handle, 18> others(s.begin(), s.end());
     others.push_back(star.a);
     others.push_back(star.b);
     auto valued = [&](const Tuple& t) {
@@ -224,7 +232,7 @@ public:
   /// The worst score of the best triangulation (+inf: no finite cell).
   double score() const { return best_[n_ - 1]; }
   /// Its 2n-4 tetrahedra, positively oriented.
-  const std::vector<Tuple>& cells() const { return cells_; }
+  const Tuples& cells() const { return cells_; }
 
 private:
   void collect(const Edge_star<Tr>& star, int i, int j)
@@ -239,9 +247,9 @@ private:
   }
 
   int n_;
-  std::vector<double> best_;
-  std::vector<int> split_;
-  std::vector<Tuple> cells_;
+  Star_vector<double, 256> best_; // n * n, indexed i * n + j
+  Star_vector<int, 256> split_;
+  Tuples cells_;
 };
 
 

@@ -33,15 +33,14 @@ namespace internal {
 /// s = ring[k], is replaced by `new_cells`: s gives way to the
 /// vertices that the new cells through a and b join it to. In the order
 /// and orientation of `Edge_star`, from the cells' own vertex order.
-template <class Tr>
-std::vector<typename Tr::Vertex_handle>
-ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
-           const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells)
+template <class Tr, class New_cells>
+Star_vector<typename Tr::Vertex_handle>
+ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k, const New_cells& new_cells)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   const std::size_t n = star.ring.size();
   // The next vertex in the ring, as pairs (from, to).
-  std::vector<std::pair<Vertex_handle, Vertex_handle>> next;
+  Star_vector<std::pair<Vertex_handle, Vertex_handle>, 32> next;
   for(std::size_t j = 0; j < n; ++j)
     if(j != k && (j + 1) % n != k) next.emplace_back(star.ring[j], star.ring[(j + 1) % n]);
   for(const auto& t : new_cells)
@@ -62,7 +61,7 @@ ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k,
     if(inversions % 2 == 0) next.emplace_back(t[pw], t[pu]);
     else next.emplace_back(t[pu], t[pw]);
   }
-  std::vector<Vertex_handle> ring;
+  Star_vector<Vertex_handle> ring;
   Vertex_handle v = star.ring[(k + n - 1) % n];
   do
   {

@@ -20,13 +20,14 @@ namespace internal {
 /// take the cell data of the old ones and each keeps the facet data of the
 /// outer facet it takes over. The visitor sees the old cells before and the
 /// new ones after. Returns the new cells.
-template <class Tr, class Constraints, class Visitor>
-std::vector<typename Tr::Cell_handle> replace_cells(Tr& tr, const std::vector<typename Tr::Cell_handle>& old_cells,
-                                                    const std::vector<std::array<typename Tr::Vertex_handle, 4>>& new_cells,
+template <class Tr, class Old_cells, class New_cells, class Constraints, class Visitor>
+std::vector<typename Tr::Cell_handle> replace_cells(Tr& tr, const Old_cells& old_range, const New_cells& new_cells,
                                                     const Constraints& constraints, Visitor& visitor)
 {
-  visitor_of(visitor).before_replacement(tr, old_cells);
   typedef typename Tr::Cell_handle Cell_handle;
+  // The visitor takes a vector; the attempts that lead here keep theirs on the stack.
+  const std::vector<Cell_handle> old_cells(old_range.begin(), old_range.end());
+  visitor_of(visitor).before_replacement(tr, old_cells);
   typedef typename Tr::Vertex_handle Vertex_handle;
   auto& tds = tr.tds();
   struct Slot
