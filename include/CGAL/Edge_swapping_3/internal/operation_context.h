@@ -48,14 +48,6 @@ struct Operation_context
   int maximum_ring;
   /// The new cells of each operation made (finite and infinite) are appended here.
   std::vector<Cell_handle>& created;
-
-  /// The measure of a tetrahedron, as a score: larger is better.
-  template <class Point>
-  double score(const Point& a, const Point& b, const Point& c, const Point& d) const
-  {
-    const double v = criterion.measure(a, b, c, d);
-    return larger_is_worse ? -v : v;
-  }
 };
 
 template <class Tr, class Criterion, class Constraints, class Visitor>

@@ -5,6 +5,7 @@
 #ifndef CGAL_EDGE_SWAPPING_3_INTERNAL_OPTIMIZER_CHANGE_NEIGHBOURHOOD_H
 #define CGAL_EDGE_SWAPPING_3_INTERNAL_OPTIMIZER_CHANGE_NEIGHBOURHOOD_H
 
+#include <CGAL/Edge_swapping_3/internal/facet_key.h>
 #include <CGAL/Edge_swapping_3/internal/flat_hash_map.h>
 #include <algorithm>
 #include <cstddef>
