@@ -15,23 +15,13 @@ program=$(realpath "${1:-build/bin/edge_swap}")
 bash scripts/install_dependencies.sh gmsh gmsh-doc tetgen libcgal-demo > /dev/null
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-doc=/usr/share/doc/gmsh-doc/doc/gmsh
-meshes=()
-for geo in tutorial/t5 tutorial/t16 demos/boolean/boolean demos/boolean/compsolid; do
-  name=$(basename "$geo")
-  if [ -f "$doc/$geo.geo.gz" ]; then zcat "$doc/$geo.geo.gz" > "$dir/$name.geo"; else cp "$doc/$geo.geo" "$dir/$name.geo"; fi
-  (cd "$dir" && gmsh -3 "$name.geo" -o "$name.msh" > "$name.log" 2>&1)
-  meshes+=("$dir/$name.msh")
-done
-cp /usr/share/doc/tetgen/examples/example.poly "$dir/"
-(cd "$dir" && tetgen -pqQ example.poly)
-meshes+=("$dir/example.1.ele")
-tar -xzf /usr/share/doc/libcgal-dev/examples.tar.gz -C "$dir" examples/Tetrahedral_remeshing/data/sphere.mesh
-meshes+=("$dir/examples/Tetrahedral_remeshing/data/sphere.mesh")
+bash benchmark/Edge_swapping_3/make_real_meshes.sh "$dir" tutorial/t5 tutorial/t16 demos/boolean/boolean \
+  demos/boolean/compsolid > "$dir/meshes.txt"
+mapfile -t meshes < "$dir/meshes.txt"
 # TetGen's Delaunay triangulation of 3,000 random points (a fixed sequence).
 awk 'BEGIN { srand(7); print 3000, 3, 0, 0; for(i = 1; i <= 3000; ++i) print i, rand(), rand(), rand() }' \
   > "$dir/random.node"
-(cd "$dir" && tetgen -Q random.node)
+(cd "$dir" && tetgen -Q random.node > /dev/null)
 meshes+=("$dir/random.1.ele")
 
 settings=(
