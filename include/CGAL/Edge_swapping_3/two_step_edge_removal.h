@@ -32,10 +32,12 @@ namespace internal {
 /// The ring of (a, b) once the star of an edge (x, s), x = a or b,
 /// s = ring[k], is replaced by `new_cells`: s gives way to the
 /// vertices that the new cells through a and b join it to. In the order
-/// and orientation of `Edge_star`, from the cells' own vertex order.
+/// and orientation of `Edge_star`, from the cells' own vertex order; empty
+/// when the new cells close no ring. (Written in place: a small vector
+/// returned by value draws a false -Wstringop-overread from GCC 12.)
 template <class Tr, class New_cells>
-Star_vector<typename Tr::Vertex_handle>
-ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k, const New_cells& new_cells)
+void ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k, const New_cells& new_cells,
+                Star_vector<typename Tr::Vertex_handle>& ring)
 {
   typedef typename Tr::Vertex_handle Vertex_handle;
   const std::size_t n = star.ring.size();
@@ -61,23 +63,30 @@ ring_after(const Tr& tr, const Edge_star<Tr>& star, std::size_t k, const New_cel
     if(inversions % 2 == 0) next.emplace_back(t[pw], t[pu]);
     else next.emplace_back(t[pu], t[pw]);
   }
-  Star_vector<Vertex_handle> ring;
+  ring.clear();
   Vertex_handle v = star.ring[(k + n - 1) % n];
   do
   {
     ring.push_back(v);
     const auto it = std::find_if(next.begin(), next.end(), [&](const auto& e) { return e.first == v; });
-    if(it == next.end() || ring.size() > next.size()) return {};
+    if(it == next.end() || ring.size() > next.size())
+    {
+      ring.clear();
+      return;
+    }
     v = it->second;
   } while(v != ring.front());
-  if(ring.size() != next.size()) return {};
+  if(ring.size() != next.size())
+  {
+    ring.clear();
+    return;
+  }
   for(std::size_t j = 0; j < ring.size(); ++j)
     if(tr.is_infinite(ring[j]))
     {
       std::rotate(ring.begin(), ring.begin() + (j + 1) % ring.size(), ring.end());
       break;
     }
-  return ring;
 }
 
 /// A bound on the best worst score of the triangulations of an edge's ring
@@ -170,7 +179,7 @@ Edge_removal_report remove_edge_in_two_steps(const Context& op, const typename C
     Edge_star<Tr> after;
     after.a = a;
     after.b = b;
-    after.ring = ring_after(tr, star, k, step1->cells());
+    ring_after(tr, star, k, step1->cells(), after.ring);
     if(after.ring.size() < 3 || int(after.ring.size()) > maximum || !beats_floor(after, step2)) continue;
     // Both steps are known to succeed: make them.
     const std::vector<Cell_handle> first = replace_cells(tr, inner.cells, step1->cells(), constraints, op.visitor);
