@@ -450,9 +450,8 @@ private:
 
   // No vertex goes in a cell that has an inserted vertex. Next to a facet
   // that bounds the quality (a needle on the hull), each new vertex would
-  // otherwise gain a little on the last, on and on: on 2,000 random points,
-  // 17,415 insertions in 412 s; with this rule, 521 in 10 s, and fewer bad
-  // cells (doc/Edge_swapping_3/user_manual.md).
+  // otherwise gain a little on the last, on and on (the figures: user
+  // manual, section 2, `vertex_change_angles`).
   bool try_vertex_insertion(Cell_handle c)
   {
     for(int i = 0; i < 4; ++i)
