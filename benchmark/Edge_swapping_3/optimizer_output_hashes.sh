@@ -9,9 +9,12 @@
 #   bash benchmark/Edge_swapping_3/optimizer_output_hashes.sh [EDGE_SWAP] > hashes.txt
 #
 # EDGE_SWAP defaults to build/bin/edge_swap. Each line: hash, mesh, settings.
+# THREADS=N adds --threads N to every run (THREADS=1 compares a build that
+# has --threads with one from before it, which ran on one thread).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 program=$(realpath "${1:-build/bin/edge_swap}")
+threads=${THREADS:+--threads $THREADS}
 bash scripts/install_dependencies.sh gmsh gmsh-doc tetgen libcgal-demo > /dev/null
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
@@ -35,7 +38,7 @@ for mesh in "${meshes[@]}"; do
   for s in "${settings[@]}"; do
     rm -f "$dir/out.mesh"
     # shellcheck disable=SC2086
-    "$program" -q optimize "$mesh" -o "$dir/out.mesh" $s > "$dir/report.txt"
+    "$program" -q optimize "$mesh" -o "$dir/out.mesh" $s $threads > "$dir/report.txt"
     printf '%s  %s  %s\n' "$(sha256sum < "$dir/out.mesh" | cut -c1-16)" "$(basename "$mesh")" "${s:-(defaults)}"
   done
 done
@@ -43,6 +46,7 @@ done
 for node in test/Edge_swapping_3/fixtures/cospherical_199_points.node \
             test/Edge_swapping_3/fixtures/helper_storage_order_cycle_300.node; do
   rm -f "$dir/out.mesh"
-  "$program" -q optimize "$node" -o "$dir/out.mesh" --criterion minmax-dihedral --operations all > "$dir/report.txt"
+  # shellcheck disable=SC2086
+  "$program" -q optimize "$node" -o "$dir/out.mesh" --criterion minmax-dihedral --operations all $threads > "$dir/report.txt"
   printf '%s  %s  %s\n' "$(sha256sum < "$dir/out.mesh" | cut -c1-16)" "$(basename "$node")" "--criterion minmax-dihedral --operations all"
 done

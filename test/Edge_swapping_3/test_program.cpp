@@ -234,7 +234,11 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --criterion minmax-dihedral --time-limit nan",
        "optimize " + in + out + " --criterion minmax-dihedral --time-limit soon",
        "optimize " + in + out + " --time-limit 5",
-       "optimize " + in + out + " --criterion minmax-dihedral --operations paper-flips --time-limit 5"})
+       "optimize " + in + out + " --criterion minmax-dihedral --operations paper-flips --time-limit 5",
+       "optimize " + in + out + " --criterion minmax-dihedral --threads -1",
+       "optimize " + in + out + " --criterion minmax-dihedral --threads many",
+       "optimize " + in + out + " --criterion minmax-dihedral --threads 5000",
+       "optimize " + in + out + " --threads 2"})
   {
     INFO("edge_swap " << args);
     const Run r = w.run(args);
@@ -394,6 +398,35 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("minmax-dihedral: converged after") != std::string::npos);
   REQUIRE(Workdir::slurp(w.path("h.csv")).rfind("cycle,swaps_2_3,", 0) == 0);
+}
+
+TEST_CASE("optimize --threads: the same number of threads writes the same file - a valid mesh",
+          "[program][threads]")
+{
+  Workdir w;
+  const unsigned seed = 17;
+  INFO("seed " << seed);
+  write_random_node(w, "cube.node", 2500, seed);
+  const std::string start = "optimize " + w.path("cube.node") +
+                            " --start delaunay --criterion radius-ratio --operations topological,vertex-removal,vertex-insertion";
+  for(const std::string threads : {"1", "2"})
+  {
+    INFO("--threads " << threads);
+    const std::string a = w.path("a" + threads + ".mesh"), b = w.path("b" + threads + ".mesh");
+    const Run r = w.run(start + " --threads " + threads + " -o " + a + " --stats " + w.path("s.json"));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.out.find("converged") != std::string::npos);
+    REQUIRE(Workdir::slurp(w.path("s.json")).find("\"threads\": " + threads) != std::string::npos);
+    REQUIRE(w.run(start + " --threads " + threads + " -o " + b).exit_code == 0);
+    REQUIRE(Workdir::slurp(a) == Workdir::slurp(b));
+    const Run c = w.run("check " + a);
+    INFO(c.out << c.err);
+    REQUIRE(c.exit_code == 0);
+    REQUIRE(c.out.find("valid triangulation") != std::string::npos);
+  }
+  // Parts make a difference, and a run in parts inserted vertices here.
+  REQUIRE(Workdir::slurp(w.path("a1.mesh")) != Workdir::slurp(w.path("a2.mesh")));
 }
 
 TEST_CASE("optimize --time-limit and Ctrl-C end the worst-first driver with the mesh so far - valid and written",

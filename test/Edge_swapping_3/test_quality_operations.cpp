@@ -24,6 +24,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <random>
 #include <optional>
 #include <set>
@@ -1095,6 +1096,37 @@ TEST_CASE("The quality driver ends at a stop flag or a time limit - the mesh val
   }
 }
 
+namespace {
+
+/// The exact volume of each subdomain (0, 1, 2).
+std::array<CGAL::Exact_rational, 3> subdomain_volumes(const Domain_tr& tr)
+{
+  std::array<CGAL::Exact_rational, 3> v;
+  for(auto c : tr.finite_cell_handles())
+    v[c->info().subdomain] +=
+      exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
+  return v;
+}
+
+/// The constrained facets, each by its sorted points and its reference, sorted.
+std::vector<std::pair<std::array<Point, 3>, int>> constrained_facets(const Domain_tr& tr)
+{
+  std::vector<std::pair<std::array<Point, 3>, int>> facets;
+  for(auto c : tr.finite_cell_handles())
+    for(int i = 0; i < 4; ++i)
+      if(c->info().facet_reference[i] != ES::Domain_cell_info::no_reference)
+      {
+        std::array<Point, 3> p = {c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(),
+                                  c->vertex((i + 3) & 3)->point()};
+        std::sort(p.begin(), p.end());
+        facets.emplace_back(p, c->info().facet_reference[i]);
+      }
+  std::sort(facets.begin(), facets.end());
+  return facets;
+}
+
+} // namespace
+
 TEST_CASE("The quality driver keeps the subdomains and the constrained facets of a domain mesh", "[quality driver]")
 {
   const unsigned seed = 12;
@@ -1113,36 +1145,8 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     for(int i = 0; i < 4; ++i)
       if(c->info().subdomain != c->neighbor(i)->info().subdomain)
         c->info().facet_reference[i] = (tr.is_infinite(c) || tr.is_infinite(c->neighbor(i))) ? 5 : 7;
-  auto subdomain_volumes = [&]() {
-    std::array<CGAL::Exact_rational, 3> v;
-    for(auto c : tr.finite_cell_handles())
-      v[c->info().subdomain] +=
-        exact_volume(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(), c->vertex(3)->point());
-    return v;
-  };
-  auto constrained_facets = [&]() {
-    std::vector<std::pair<std::array<Point, 3>, int>> facets;
-    for(auto c : tr.finite_cell_handles())
-      for(int i = 0; i < 4; ++i)
-        if(c->info().facet_reference[i] != ES::Domain_cell_info::no_reference)
-        {
-          std::array<Point, 3> p = {c->vertex((i + 1) & 3)->point(), c->vertex((i + 2) & 3)->point(),
-                                    c->vertex((i + 3) & 3)->point()};
-          std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; });
-          facets.emplace_back(p, c->info().facet_reference[i]);
-        }
-    std::sort(facets.begin(), facets.end(), [](const auto& a, const auto& b) {
-      for(int k = 0; k < 3; ++k)
-      {
-        const auto o = CGAL::compare_xyz(a.first[k], b.first[k]);
-        if(o != CGAL::EQUAL) return o == CGAL::SMALLER;
-      }
-      return a.second < b.second;
-    });
-    return facets;
-  };
-  const auto volumes = subdomain_volumes();
-  const auto facets = constrained_facets();
+  const auto volumes = subdomain_volumes(tr);
+  const auto facets = constrained_facets(tr);
   const Domain_tr start = tr;
   for(unsigned operations :
       {unsigned(ES::TOPOLOGICAL_OPERATIONS), unsigned(ES::ALL_OPERATIONS), unsigned(ES::ALL_WITH_VERTEX_CHANGES)})
@@ -1159,8 +1163,8 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
     REQUIRE(tr.is_valid());
     REQUIRE(every_cell_positive(tr));
     // Exact: the interface and the hull keep their vertices where they were.
-    REQUIRE(subdomain_volumes() == volumes);
-    REQUIRE(constrained_facets() == facets);
+    REQUIRE(subdomain_volumes(tr) == volumes);
+    REQUIRE(constrained_facets(tr) == facets);
     for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
     WARN("domain mesh: " << r.edge_removals << " edge removals, " << r.two_step_removals << " in two steps, "
                          << r.face_removals << " multi-face removals, "
@@ -1180,6 +1184,118 @@ TEST_CASE("The quality driver keeps the subdomains and the constrained facets of
                                               ES::parameters::mesh_constraints(ES::Domain_constraints())));
       REQUIRE(ES::improve_worst_tetrahedra(tr, ES::Max_min_dihedral_angle_criterion(), again).number_of_operations() == 0);
       REQUIRE(cell_set(tr) == cells);
+    }
+  }
+}
+
+namespace {
+
+/// Counts the calls it gets, and fails when two overlap.
+struct Overlap_visitor : ES::Default_replacement_visitor
+{
+  std::shared_ptr<std::atomic<int>> inside = std::make_shared<std::atomic<int>>(0);
+  std::shared_ptr<std::size_t> calls = std::make_shared<std::size_t>(0);
+  std::shared_ptr<bool> overlapped = std::make_shared<bool>(false);
+  void call() const
+  {
+    if(inside->fetch_add(1) != 0) *overlapped = true;
+    ++*calls;
+    inside->fetch_sub(1);
+  }
+  template <class T>
+  void after_replacement(const T&, const std::vector<typename T::Cell_handle>&) const { call(); }
+  template <class T>
+  void after_move(const T&, typename T::Vertex_handle, const typename T::Point&) const { call(); }
+  template <class T>
+  void after_insertion(const T&, typename T::Vertex_handle, const std::array<typename T::Vertex_handle, 4>&,
+                       const std::array<double, 4>&) const { call(); }
+};
+
+/// The points of the cells and of the vertices in the order the containers hold them.
+template <class T>
+std::vector<Point> storage_order(const T& tr)
+{
+  std::vector<Point> order;
+  for(auto v = tr.tds().vertices().begin(); v != tr.tds().vertices().end(); ++v)
+    order.push_back(tr.is_infinite(v) ? Point(-1, -1, -1) : v->point());
+  for(auto c = tr.tds().cells().begin(); c != tr.tds().cells().end(); ++c)
+    for(int i = 0; i < 4; ++i) order.push_back(tr.is_infinite(c->vertex(i)) ? Point(-1, -1, -1) : c->vertex(i)->point());
+  return order;
+}
+
+} // namespace
+
+TEST_CASE("The quality driver on several threads - valid - regions and constrained facets kept - the same mesh for "
+          "the same number of threads",
+          "[quality driver][threads]")
+{
+  const unsigned seed = 21;
+  INFO("seed " << seed);
+  Domain_tr start;
+  ES::insert_delaunay(start, random_in_cube(2600, seed));
+  // A ball of subdomain 2 in a cube of subdomain 1: the interface crosses
+  // the parts' frontiers. The interface and the hull are constrained.
+  auto side = [&](Domain_tr::Cell_handle c) {
+    double d = 0;
+    for(int a = 0; a < 3; ++a)
+    {
+      double x = 0;
+      for(int i = 0; i < 4; ++i) x += c->vertex(i)->point()[a] / 4;
+      d += (x - 0.5) * (x - 0.5);
+    }
+    return d < 0.1 ? 2 : 1;
+  };
+  for(auto c : start.all_cell_handles()) c->info().subdomain = start.is_infinite(c) ? 0 : side(c);
+  for(auto c : start.all_cell_handles())
+    for(int i = 0; i < 4; ++i)
+      if(c->info().subdomain != c->neighbor(i)->info().subdomain)
+        c->info().facet_reference[i] = (start.is_infinite(c) || start.is_infinite(c->neighbor(i))) ? 5 : 7;
+  REQUIRE(start.number_of_finite_cells() >= 3 * 5000);
+  const auto volumes = subdomain_volumes(start);
+  const auto facets = constrained_facets(start);
+  const ES::Max_min_dihedral_angle_criterion criterion;
+  // Vertex changes without smoothing: vertices made and removed in the
+  // copies come back, and the run stays short.
+  for(unsigned operations : {unsigned(ES::TOPOLOGICAL_OPERATIONS),
+                             unsigned(ES::TOPOLOGICAL_OPERATIONS | ES::VERTEX_REMOVAL | ES::VERTEX_INSERTION)})
+  {
+    CAPTURE(operations);
+    auto run = [&](Domain_tr& tr, unsigned threads, const Overlap_visitor& visitor) {
+      return ES::improve_worst_tetrahedra(
+          tr, criterion,
+          ES::parameters::number_of_threads(
+              threads, ES::parameters::operations(operations, ES::parameters::mesh_constraints(ES::Domain_constraints())
+                                                                  .visitor(visitor))));
+    };
+    Domain_tr one = start;
+    const auto alone = run(one, 1, Overlap_visitor());
+    for(unsigned threads : {2u, 3u})
+    {
+      CAPTURE(threads);
+      if(threads == 3 && operations != unsigned(ES::TOPOLOGICAL_OPERATIONS)) continue;
+      Domain_tr tr = start, again = start;
+      const Overlap_visitor visitor;
+      const auto r = run(tr, threads, visitor);
+      REQUIRE(r.ending == ES::CONVERGED);
+      REQUIRE(r.number_of_operations() > 100);
+      // One part at a time: every change told, never two calls at once.
+      REQUIRE(!*visitor.overlapped);
+      REQUIRE(*visitor.calls >= r.number_of_operations());
+      REQUIRE(tr.is_valid());
+      REQUIRE(every_cell_positive(tr));
+      REQUIRE(tr.number_of_vertices() == start.number_of_vertices() + r.vertex_insertions - r.vertex_removals);
+      if(operations & ES::VERTEX_INSERTION) REQUIRE(r.vertex_insertions + r.vertex_removals > 0);
+      REQUIRE(subdomain_volumes(tr) == volumes);
+      REQUIRE(constrained_facets(tr) == facets);
+      for(auto c : tr.finite_cell_handles()) REQUIRE((c->info().subdomain == 1 || c->info().subdomain == 2));
+      REQUIRE(r.worst_after >= r.worst_before);
+      REQUIRE(r.worst_after == worst_smallest_angle(tr));
+      WARN(threads << " threads: worst smallest angle " << r.worst_before << " -> " << r.worst_after << " ("
+                   << alone.worst_after << " on one), " << r.number_of_operations() << " operations ("
+                   << alone.number_of_operations() << ")");
+      // The same number of threads: the same mesh, in the same storage order.
+      run(again, threads, Overlap_visitor());
+      REQUIRE(storage_order(again) == storage_order(tr));
     }
   }
 }

@@ -77,6 +77,11 @@ int main(int argc, char** argv)
                                           "worst-first driver: end after this many seconds with the mesh so far "
                                           "(valid, and written; the report says \"time limit reached\"); Ctrl-C "
                                           "does the same at any time (exit status 130)");
+  auto* threads = optimize->add_option("--threads", opt.threads,
+                                       "worst-first driver: threads (default 0: every core); a mesh of at least "
+                                       "5,000 cells a thread is cut into as many parts; the same number gives the "
+                                       "same mesh")
+                      ->check(CLI::Range(0u, 4096u));
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 
@@ -159,6 +164,7 @@ int main(int argc, char** argv)
       opt.start_given = start->count() > 0;
       opt.quality_target_given = target->count() > 0;
       opt.time_limit_given = time_limit->count() > 0;
+      opt.threads_given = threads->count() > 0;
       opt.angle_range_given = angle_range->count() > 0;
       opt.flip_driver_options_given = perturb->count() > 0 || max_cycles->count() > 0;
       return run_optimize(opt);

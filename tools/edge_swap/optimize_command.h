@@ -34,6 +34,8 @@ struct Optimize_options
   bool quality_target_given = false;
   double time_limit = 0;              ///< `--time-limit`, seconds, when `time_limit_given`
   bool time_limit_given = false;
+  unsigned threads = 0;               ///< `--threads`: 0 for every core
+  bool threads_given = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
 };
@@ -151,6 +153,8 @@ private:
 inline int run_worst_first(const Optimize_options& o, const Input& given, Triangulation& tr, unsigned operations)
 {
   Input in = given; // vertex insertion appends points
+  const std::size_t points_before = in.points.size();
+  bool in_parts = false;
   const std::size_t vertices_before = ES::number_of_mesh_vertices(tr);
   const std::size_t cells_before = ES::number_of_mesh_cells(tr);
   namespace np = ES::parameters;
@@ -163,16 +167,20 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
       else
       {
         typedef std::decay_t<decltype(criterion)> Criterion;
+        in_parts = ES::internal::number_of_parts<std::decay_t<decltype(constraints)>>(
+                       tr, ES::internal::threads_asked(o.threads)) > 1;
         const auto settings = np::keep_dihedral_angle_range(o.angle_range == "keep",
-            np::operations(operations, np::stop_flag(interruption->flag(), np::mesh_constraints(constraints,
+            np::operations(operations, np::number_of_threads(o.threads, np::stop_flag(interruption->flag(), np::mesh_constraints(constraints,
                 CGAL::parameters::visitor(Worst_first_visitor<Criterion>(criterion, in))
-                    .maximum_running_time(time_limit)))));
+                    .maximum_running_time(time_limit))))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
       }
     });
   });
+  // Parts tell of the vertices they make in an order the threads' timing decides.
+  if(in_parts) ES::renumber_added_points(tr, in, points_before);
   // Ctrl-C while the files are written ends the program (no file is left half written).
   interruption.reset();
   Output_files files;
@@ -200,6 +208,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
                           {"seconds", report.seconds}};
       if(o.quality_target_given) j["quality_target"] = o.quality_target;
       if(o.time_limit_given) j["time_limit"] = o.time_limit;
+      j["threads"] = ES::internal::threads_asked(o.threads);
       out << j.dump(2) << '\n';
     });
   files.commit();
@@ -295,6 +304,9 @@ inline int run_optimize(const Optimize_options& given)
                       "paper-flips)");
   if(o.time_limit_given && !(std::isfinite(o.time_limit) && o.time_limit > 0))
     throw Usage_error("--time-limit must be a positive number of seconds");
+  if(o.threads_given && operations == 0)
+    throw Usage_error("--threads sets the worst-first driver (a quality --criterion, --operations other than "
+                      "paper-flips)");
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
                       "worst-first driver (--operations " + options.operations + ")" + defaulted);

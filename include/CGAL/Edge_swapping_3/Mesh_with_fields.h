@@ -272,6 +272,40 @@ void add_numbered_vertex(Mesh_with_fields<Point>& mesh, Vertex_handle v, const s
 }
 
 /// \ingroup PkgEdgeSwapping3Domains
+/// Renumbers the points from `first_added` on (those vertex insertion
+/// appended) in the order `tr` stores their vertices, those removed since
+/// last: the numbers then depend on the mesh, not on the order in which the
+/// threads of a run in parts told the visitor of them.
+template <class Tr, class Point>
+void renumber_added_points(const Tr& tr, Mesh_with_fields<Point>& mesh, std::size_t first_added)
+{
+  const std::size_t n = mesh.points.size();
+  if(first_added >= n) return;
+  std::vector<std::size_t> order; // old numbers, in their new order
+  std::vector<char> placed(n - first_added, 0);
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(v->info() >= first_added && v->info() < n)
+    {
+      order.push_back(v->info());
+      placed[v->info() - first_added] = 1;
+    }
+  for(std::size_t k = first_added; k < n; ++k)
+    if(!placed[k - first_added]) order.push_back(k);
+  std::vector<std::size_t> number(n - first_added);
+  for(std::size_t k = 0; k < order.size(); ++k) number[order[k] - first_added] = first_added + k;
+  auto permuted = [&](auto& values) {
+    auto old = values;
+    for(std::size_t k = 0; k < order.size(); ++k) values[first_added + k] = old[order[k]];
+  };
+  permuted(mesh.points);
+  for(auto& field : mesh.fields) permuted(field);
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+    if(v->info() >= first_added && v->info() < n) v->info() = number[v->info() - first_added];
+  for(std::size_t& k : mesh.removed_points)
+    if(k >= first_added && k < n) k = number[k - first_added];
+}
+
+/// \ingroup PkgEdgeSwapping3Domains
 /// The values of the point fields of `mesh` at `p`, a new vertex that fell
 /// in the cell `where` describes (a `Site_location`, whose vertices are
 /// numbered by `info()`): a field for which `computed(name, p, value)` returns

@@ -22,6 +22,7 @@
 #include <CGAL/Edge_swapping_3/Quality_report.h>
 #include <CGAL/Edge_swapping_3/Replacement_visitor.h>
 #include <CGAL/Edge_swapping_3/internal/optimizer/Worst_first_optimizer.h>
+#include <CGAL/Edge_swapping_3/internal/optimizer/partitioned_optimization.h>
 #include <CGAL/Edge_swapping_3/parameters.h>
 #include <CGAL/Named_function_parameters.h>
 #include <atomic>
@@ -107,6 +108,14 @@ Worst_first_settings worst_first_settings(const Tr& tr, const NamedParameters& n
 ///     is valid and each change made improved it \cgalParamNEnd
 ///   \cgalParamNBegin{stop_flag} `const std::atomic<bool>*`, default none: the run ends in the same way, with the
 ///     ending `INTERRUPTED`, once the flag reads true (set it from another thread or a signal handler) \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads} `unsigned`, default 1; 0: every core. With more than one, and a mesh of
+///     at least 5,000 cells a thread under `No_constraints` or `Domain_constraints`, the mesh is cut into as many
+///     parts, optimized at once with their frontiers frozen, glued back, and the band around the frontiers is
+///     optimized last (`internal/optimizer/partitioned_optimization.h`). The result depends on the number of
+///     threads, not on their timing (the same number gives the same mesh, cell for cell, with or without TBB);
+///     the visitor is called by one part at a time, on the part's triangulation (a copy of `tr` for every part
+///     but the first: data it writes in cells and vertices is carried back, handles it keeps are not). Memory:
+///     a copy of the triangulation per thread beyond the first. Other constraints run on one thread \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a model of `ReplacementVisitor_3`, default `Default_replacement_visitor`: told of
 ///     every flip, removal (each step of a two-step removal), move, vertex insertion and vertex removal \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -120,21 +129,25 @@ Quality_report improve_worst_tetrahedra(Tr& tr, const Worst_tetrahedron_criterio
   const internal::Worst_first_settings settings = internal::worst_first_settings<larger_is_worse>(tr, np);
   const auto visitor = choose_parameter(get_parameter(np, CGAL::internal_np::visitor), Default_replacement_visitor());
   typedef std::decay_t<decltype(visitor)> Visitor;
+  const unsigned threads = internal::threads_asked(choose_parameter(get_parameter(np, internal_np::number_of_threads), 1u));
   return internal::with_domain_constraints(tr, np, [&](const auto& constraints) {
     typedef std::decay_t<decltype(constraints)> Constraints;
     typedef Worst_tetrahedron_criterion<Measure, larger_is_worse> Criterion;
-    if(!keep_range)
-      return internal::Worst_first_optimizer<Tr, Criterion, Criterion, Constraints, Visitor>(
-                 tr, criterion, criterion, constraints, visitor, settings)
+    auto optimize = [&](const auto& guarded) {
+      typedef std::decay_t<decltype(guarded)> Guarded;
+      const unsigned parts = internal::number_of_parts<Constraints>(tr, threads);
+      if(parts > 1)
+        return internal::optimize_in_parts(tr, guarded, criterion, constraints, visitor, settings, parts);
+      return internal::Worst_first_optimizer<Tr, Guarded, Criterion, Constraints, Visitor>(tr, guarded, criterion,
+                                                                                          constraints, visitor, settings)
           .run();
+    };
+    if(!keep_range) return optimize(criterion);
     const Dihedral_angle_range range = dihedral_angle_range(
         tr, [&](typename Tr::Cell_handle c) { return constraints.is_in_domain(tr, c); });
     // Reported in the criterion's own measure (the guard computes the
     // angles on the points in another order: the last bits may differ).
-    const auto guarded = guarded_by_dihedral_angles(criterion, range);
-    return internal::Worst_first_optimizer<Tr, std::decay_t<decltype(guarded)>, Criterion, Constraints, Visitor>(
-               tr, guarded, criterion, constraints, visitor, settings)
-        .run();
+    return optimize(guarded_by_dihedral_angles(criterion, range));
   });
 }
 

@@ -134,8 +134,8 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(new_vertex_visitor)
 /// functions after each round.
 CGAL_EDGE_SWAPPING_3_PARAMETER(round_visitor)
 /// `unsigned`: the threads of `run_conjecture_experiment` (default 0: every
-/// core), and of the first round's scan of `swap_edges` with a Delaunay
-/// criterion (default 1).
+/// core), of the first round's scan of `swap_edges` with a Delaunay
+/// criterion (default 1), and the parts of `improve_worst_tetrahedra` (default 1).
 CGAL_EDGE_SWAPPING_3_PARAMETER(number_of_threads)
 
 #undef CGAL_EDGE_SWAPPING_3_PARAMETER

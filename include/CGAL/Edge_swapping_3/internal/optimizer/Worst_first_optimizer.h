@@ -127,11 +127,15 @@ public:
   Worst_first_optimizer& operator=(const Worst_first_optimizer&) = delete;
 
   /// Visits the worst waiting cell until none waits (with smoothing, until a
-  /// sweep over every cell moves no vertex) or a limit is reached.
-  Quality_report run()
+  /// sweep over every cell moves no vertex) or a limit is reached. The cells
+  /// of `first` wait at the start, when given; otherwise every cell does.
+  Quality_report run(const std::vector<Cell_handle>* first = nullptr)
   {
     report_.worst_before = worst_in_domain(tr_, reported_, constraints_);
-    for(Cell_handle c : tr_.finite_cell_handles()) push(c, false);
+    if(first != nullptr)
+      for(Cell_handle c : *first) push(c, false);
+    else
+      for(Cell_handle c : tr_.finite_cell_handles()) push(c, false);
     while(const std::optional<Visit> visit = next_visit())
     {
       if(try_operations(*visit)) record_change();
