@@ -179,6 +179,34 @@ template <class Tr>
 struct Part_vertex_log
 {
   std::vector<std::pair<typename Tr::Vertex_handle, bool>> events; ///< the vertex, and true when made
+
+  /// Replays the log: the vertices made and still there, in the order they
+  /// were made, and those removed that were there before, in order. A
+  /// handle may name a vertex made in the slot of one removed earlier.
+  void replay(std::vector<typename Tr::Vertex_handle>& made, std::vector<typename Tr::Vertex_handle>& removed) const
+  {
+    typedef typename Tr::Vertex_handle Vertex_handle;
+    std::vector<Vertex_handle> all_made;
+    std::vector<char> alive;
+    Flat_hash_map<Vertex_handle, std::size_t, Handle_hash> alive_at; // index in `all_made`
+    for(const auto& [v, is_made] : events)
+    {
+      if(is_made)
+      {
+        alive_at[v] = all_made.size();
+        all_made.push_back(v);
+        alive.push_back(1);
+      }
+      else if(const std::size_t* k = alive_at.find(v))
+      {
+        alive[*k] = 0;
+        alive_at.erase(v);
+      }
+      else removed.push_back(v);
+    }
+    for(std::size_t k = 0; k < all_made.size(); ++k)
+      if(alive[k]) made.push_back(all_made[k]);
+  }
 };
 
 /// Tells the one visitor of all parts, one part at a time (it need not be
@@ -271,22 +299,11 @@ void glue_part(Tr& tr, const std::vector<typename Tr::Cell_handle>& old_cells, c
       vertex_of[copy_vertices[r]] = vertices[r];
       rank_of[copy_vertices[r]] = r;
     }
-  // A handle of the copy may name a vertex made after one removed there.
   std::vector<char> gone(parts.size(), 0);
-  std::vector<Vertex_handle> removed, copies_made;
-  for(const auto& [v, is_made] : log.events)
+  std::vector<Vertex_handle> copies_made, copies_removed, removed;
+  log.replay(copies_made, copies_removed);
+  for(Vertex_handle v : copies_removed)
   {
-    if(is_made)
-    {
-      copies_made.push_back(v);
-      continue;
-    }
-    const auto m = std::find(copies_made.begin(), copies_made.end(), v);
-    if(m != copies_made.end())
-    {
-      copies_made.erase(m);
-      continue;
-    }
     const std::size_t r = *rank_of.find(v);
     gone[r] = 1;
     removed.push_back(vertices[r]);
@@ -350,6 +367,125 @@ void glue_part(Tr& tr, const std::vector<typename Tr::Cell_handle>& old_cells, c
   }
   for(const auto& [c, n] : pairs)
     for(int i = 0; i < 4; ++i) n->vertex(i)->set_cell(n);
+}
+
+/// A copy of the triangulation for one part: its vertices by rank, their
+/// parts by slot, and the cells waiting at the start of the part's run.
+template <class Tr>
+struct Part_copy
+{
+  std::unique_ptr<Tr> tr;
+  std::vector<typename Tr::Vertex_handle> vertices;
+  std::vector<int> slot_parts;
+  std::vector<typename Tr::Cell_handle> first;
+};
+
+/// Copies of `tr` for parts 1 to `parts - 1` (part 0 runs in `tr`), made at
+/// once; the cells `first` of `tr` (if given) are found in a copy by their
+/// place in the container, which copying keeps.
+template <class Tr>
+std::vector<Part_copy<Tr>> copies_for_parts(const Tr& tr, unsigned parts, const std::vector<int>& rank_parts,
+                                            const std::vector<typename Tr::Cell_handle>* first)
+{
+  typedef typename Tr::Cell_handle Cell_handle;
+  std::vector<std::size_t> first_places;
+  if(first != nullptr)
+  {
+    Flat_hash_set<Cell_handle, Handle_hash> waiting;
+    for(Cell_handle c : *first) waiting.insert(c);
+    std::size_t place = 0;
+    for(auto c = tr.tds().cells().begin(); c != tr.tds().cells().end(); ++c, ++place)
+      if(waiting.contains(c)) first_places.push_back(place);
+  }
+  std::vector<Part_copy<Tr>> copies(parts);
+  for_each_part(parts, [&](unsigned p) {
+    if(p == 0) return;
+    Part_copy<Tr>& copy = copies[p];
+    copy.tr = std::make_unique<Tr>(tr);
+    copy.vertices = vertices_by_rank(*copy.tr);
+    copy.slot_parts = parts_by_slot(*copy.tr, copy.vertices, rank_parts);
+    auto c = copy.tr->tds().cells().begin();
+    std::size_t place = 0;
+    for(std::size_t wanted : first_places)
+    {
+      std::advance(c, std::ptrdiff_t(wanted - place));
+      place = wanted;
+      copy.first.push_back(c);
+    }
+  });
+  return copies;
+}
+
+/// The next round's vertices (`active`, by slot) and the cells waiting at
+/// its start (`first`), after a round whose parts were `rank_parts` (for
+/// `vertices`, by rank) and which made `made` (by part): the vertices of the
+/// cells across the frontiers and their neighbours to `frontier_band_rings`
+/// rings. Only the cells around the frontiers' vertices wait at first: the
+/// parts settled the others, and the changes the next round makes requeue
+/// those they touch.
+template <class Tr>
+void next_band(const Tr& tr, const std::vector<typename Tr::Vertex_handle>& vertices,
+               const std::vector<int>& rank_parts, const std::vector<std::vector<typename Tr::Vertex_handle>>& made,
+               std::vector<char>& active, std::vector<typename Tr::Cell_handle>& first)
+{
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Cell_handle Cell_handle;
+  // The parts of the vertices now (those made are in their part's; a
+  // removed vertex is in no cell, and its slot may hold one made later).
+  Compact_container_index<typename Tr::Triangulation_data_structure::Vertex_range> slots(tr.tds().vertices());
+  std::vector<int> now(slots.number_of_slots(), -1);
+  for(std::size_t r = 0; r < vertices.size(); ++r)
+    if(rank_parts[r] >= 0) now[slots(vertices[r])] = rank_parts[r];
+  for(std::size_t p = 0; p < made.size(); ++p)
+    for(Vertex_handle v : made[p]) now[slots(v)] = int(p);
+  active.assign(now.size(), 0);
+  std::vector<Vertex_handle> ring, next, around;
+  for(auto c : tr.finite_cell_handles())
+  {
+    // Across: its vertices were all in the round, in different parts (the
+    // cells at the edge of a band stay as the rounds before left them).
+    const int part = now[slots(c->vertex(0))];
+    bool across = false, in_round = part >= 0;
+    for(int i = 1; i < 4; ++i)
+    {
+      const int q = now[slots(c->vertex(i))];
+      across = across || q != part;
+      in_round = in_round && q >= 0;
+    }
+    if(!across || !in_round) continue;
+    for(int i = 0; i < 4; ++i)
+      if(!active[slots(c->vertex(i))])
+      {
+        active[slots(c->vertex(i))] = 1;
+        ring.push_back(c->vertex(i));
+      }
+  }
+  first.clear();
+  Flat_hash_set<Cell_handle, Handle_hash> seen;
+  std::vector<Cell_handle> incident;
+  for(Vertex_handle v : ring)
+  {
+    incident.clear();
+    tr.finite_incident_cells(v, std::back_inserter(incident));
+    for(Cell_handle c : incident)
+      if(seen.insert(c)) first.push_back(c);
+  }
+  for(int k = 0; k < frontier_band_rings; ++k)
+  {
+    next.clear();
+    for(Vertex_handle v : ring)
+    {
+      around.clear();
+      tr.finite_adjacent_vertices(v, std::back_inserter(around));
+      for(Vertex_handle w : around)
+        if(!active[slots(w)])
+        {
+          active[slots(w)] = 1;
+          next.push_back(w);
+        }
+    }
+    ring.swap(next);
+  }
 }
 
 /// Adds `b` to `a`: the counts, and the first ending that is not convergence.
@@ -424,122 +560,35 @@ Quality_report optimize_in_parts(Tr& tr, const Criterion& criterion, const Repor
     }
 
     // The first part in `tr`, the others on copies made first (the copies
-    // only read `tr`); the cells waiting at the start are found in a copy
-    // by their place in the container, which copying keeps.
-    std::vector<std::size_t> first_places;
-    if(round > 0)
-    {
-      Flat_hash_set<Cell_handle, Handle_hash> waiting;
-      for(Cell_handle c : first) waiting.insert(c);
-      std::size_t place = 0;
-      for(auto c = tr.tds().cells().begin(); c != tr.tds().cells().end(); ++c, ++place)
-        if(waiting.contains(c)) first_places.push_back(place);
-    }
-    std::vector<std::unique_ptr<Tr>> copies(parts);
-    std::vector<std::vector<Vertex_handle>> copy_vertices(parts);
-    std::vector<std::vector<int>> copy_slot_parts(parts);
-    std::vector<std::vector<Cell_handle>> copy_first(parts);
-    for_each_part(parts, [&](unsigned p) {
-      if(p == 0) return;
-      copies[p] = std::make_unique<Tr>(tr);
-      copy_vertices[p] = vertices_by_rank(*copies[p]);
-      copy_slot_parts[p] = parts_by_slot(*copies[p], copy_vertices[p], rank_parts);
-      auto c = copies[p]->tds().cells().begin();
-      std::size_t place = 0;
-      for(std::size_t wanted : first_places)
-      {
-        std::advance(c, std::ptrdiff_t(wanted - place));
-        place = wanted;
-        copy_first[p].push_back(c);
-      }
-    });
+    // only read `tr`).
+    std::vector<Part_copy<Tr>> copies = copies_for_parts(tr, parts, rank_parts, round > 0 ? &first : nullptr);
     std::vector<Part_vertex_log<Tr>> logs(parts);
     std::vector<Quality_report> reports(parts);
     std::vector<std::optional<Part>> part_constraints(parts);
     for_each_part(parts, [&](unsigned p) {
       const bool all = round == 0;
       if(p == 0) part_constraints[0].emplace(tr, constraints, slot_parts, 0);
-      else part_constraints[p].emplace(*copies[p], constraints, copy_slot_parts[p], int(p));
-      reports[p] = run(p == 0 ? tr : *copies[p], *part_constraints[p], logs[p],
-                       all ? nullptr : p == 0 ? &first : &copy_first[p]);
+      else part_constraints[p].emplace(*copies[p].tr, constraints, copies[p].slot_parts, int(p));
+      reports[p] = run(p == 0 ? tr : *copies[p].tr, *part_constraints[p], logs[p],
+                       all ? nullptr : p == 0 ? &first : &copies[p].first);
     });
 
     // Glued back in part order.
     std::vector<std::vector<Vertex_handle>> made(parts);
-    for(const auto& [v, is_made] : logs[0].events)
-      if(is_made) made[0].push_back(v);
-      else made[0].erase(std::remove(made[0].begin(), made[0].end(), v), made[0].end());
+    std::vector<Vertex_handle> removed_in_place;
+    logs[0].replay(made[0], removed_in_place);
     for(unsigned p = 1; p < parts; ++p)
     {
       const Part& in_part = *part_constraints[p];
-      glue_part(tr, old_cells[p], *copies[p], [&](auto c) { return in_part.in_part(c); }, int(p), rank_parts,
-                vertices, copy_vertices[p], logs[p], made[p]);
+      glue_part(tr, old_cells[p], *copies[p].tr, [&](auto c) { return in_part.in_part(c); }, int(p), rank_parts,
+                vertices, copies[p].vertices, logs[p], made[p]);
       part_constraints[p].reset();
-      copies[p].reset();
+      copies[p] = Part_copy<Tr>();
     }
     for(const Quality_report& r : reports) add_report(total, r);
     if(total.ending != CONVERGED) break;
 
-    // The parts of the vertices now (those made are in their part's; a
-    // removed vertex is in no cell, and its slot may hold one made later).
-    Vertex_slots slots(tr.tds().vertices());
-    std::vector<int> now(slots.number_of_slots(), -1);
-    for(std::size_t r = 0; r < vertices.size(); ++r)
-      if(rank_parts[r] >= 0) now[slots(vertices[r])] = rank_parts[r];
-    for(unsigned p = 0; p < parts; ++p)
-      for(Vertex_handle v : made[p]) now[slots(v)] = int(p);
-    // The next round's vertices: those of the cells across the frontiers,
-    // and their neighbours to `frontier_band_rings` rings. Only the cells
-    // around the frontiers' vertices wait at first: the parts settled the
-    // others, and the changes the next round makes requeue those they touch.
-    active.assign(now.size(), 0);
-    std::vector<Vertex_handle> ring, next, around;
-    for(auto c : tr.finite_cell_handles())
-    {
-      // Across: its vertices were all in the round, in different parts (the
-      // cells at the edge of a band stay as the rounds before left them).
-      const int part = now[slots(c->vertex(0))];
-      bool across = false, in_round = part >= 0;
-      for(int i = 1; i < 4; ++i)
-      {
-        const int q = now[slots(c->vertex(i))];
-        across = across || q != part;
-        in_round = in_round && q >= 0;
-      }
-      if(!across || !in_round) continue;
-      for(int i = 0; i < 4; ++i)
-        if(!active[slots(c->vertex(i))])
-        {
-          active[slots(c->vertex(i))] = 1;
-          ring.push_back(c->vertex(i));
-        }
-    }
-    first.clear();
-    Flat_hash_set<Cell_handle, Handle_hash> seen;
-    std::vector<Cell_handle> incident;
-    for(Vertex_handle v : ring)
-    {
-      incident.clear();
-      tr.finite_incident_cells(v, std::back_inserter(incident));
-      for(Cell_handle c : incident)
-        if(seen.insert(c)) first.push_back(c);
-    }
-    for(int k = 0; k < frontier_band_rings; ++k)
-    {
-      next.clear();
-      for(Vertex_handle v : ring)
-      {
-        around.clear();
-        tr.finite_adjacent_vertices(v, std::back_inserter(around));
-        for(Vertex_handle w : around)
-          if(!active[slots(w)])
-          {
-            active[slots(w)] = 1;
-            next.push_back(w);
-          }
-      }
-      ring.swap(next);
-    }
+    next_band(tr, vertices, rank_parts, made, active, first);
   }
   total.worst_after = worst_in_domain(tr, reported, constraints);
   total.seconds = timer.time();
