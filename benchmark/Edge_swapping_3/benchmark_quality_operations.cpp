@@ -14,7 +14,8 @@
 // and above 165 and 175 degrees, the same first two counts on the cells with
 // no vertex on the boundary (the hull, or a facet between subdomains), the
 // 1st percentile of the radius ratio 3 r / R (1 for a regular tetrahedron),
-// then the time (the optimizer alone) and the operations. Each output is
+// the time (the optimizer alone), the cells below 10 or above 165 degrees by
+// their number of vertices on the boundary (0 to 4), and the operations. Each output is
 // validated (rebuilt, orientations checked) and its boundary triangles
 // compared with the input's.
 //
@@ -32,6 +33,7 @@
 #include <CGAL/Edge_swapping_3/IO/mesh_with_fields.h>
 #include "quality_peers.h"
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <functional>
 #include <iterator>
@@ -72,6 +74,9 @@ struct Quality_row
   // The same counts on the cells with no vertex on the boundary.
   std::size_t interior_below_10 = 0, interior_above_165 = 0;
   double interior_smallest = 180, interior_largest = 0;
+  // The cells below 10 or above 165 degrees by their number of vertices on
+  // the boundary (0 to 4): where the bad cells are.
+  std::array<std::size_t, 5> bad_by_boundary_vertices{};
 };
 
 // The points of the input's boundary triangles (facets between two
@@ -118,8 +123,10 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted,
     q.below_10 += lo < 10;
     q.above_165 += hi > 165;
     q.above_175 += hi > 175;
-    bool interior = true;
-    for(int i = 0; i < 4; ++i) interior = interior && !boundary.count(c->vertex(i));
+    int on_boundary = 0;
+    for(int i = 0; i < 4; ++i) on_boundary += int(boundary.count(c->vertex(i)));
+    const bool interior = on_boundary == 0;
+    if(lo < 10 || hi > 165) ++q.bad_by_boundary_vertices[std::size_t(on_boundary)];
     q.interior_below_10 += interior && lo < 10;
     q.interior_above_165 += interior && hi > 165;
     if(interior)
@@ -137,10 +144,11 @@ Quality_row quality(const Triangulation& tr, const Cell_filter& counted,
 
 void print(const char* name, const Quality_row& q, double seconds, const std::string& operations)
 {
-  std::printf("%-44s %6.2f / %6.2f %6zu %6zu %6zu %6zu %6zu %8.4f %8zu %8.2f  in %6.2f / %6.2f  %s\n", name,
-              q.smallest, q.largest, q.below_10, q.above_165, q.above_175, q.interior_below_10, q.interior_above_165,
-              q.radius_ratio_1st_percentile, q.cells, seconds, q.interior_smallest, q.interior_largest,
-              operations.c_str());
+  const auto& b = q.bad_by_boundary_vertices;
+  std::printf("%-44s %6.2f / %6.2f %6zu %6zu %6zu %6zu %6zu %8.4f %8zu %8.2f  in %6.2f / %6.2f  %zu/%zu/%zu/%zu/%zu  %s\n",
+              name, q.smallest, q.largest, q.below_10, q.above_165, q.above_175, q.interior_below_10,
+              q.interior_above_165, q.radius_ratio_1st_percentile, q.cells, seconds, q.interior_smallest,
+              q.interior_largest, b[0], b[1], b[2], b[3], b[4], operations.c_str());
   std::fflush(stdout);
 }
 
@@ -212,8 +220,9 @@ void rows(const std::function<void(Triangulation&)>& make, const Constraints& co
           const std::function<Cell_filter(const Triangulation&)>& counted, const quality_peers::Cell_mesh& input)
 {
   set_boundary_points(input);
-  std::printf("%-44s %15s %6s %6s %6s %6s %6s %8s %8s %8s  %18s  %s\n", "optimizer", "min / max deg", "<10", ">165",
-              ">175", "in<10", "in>165", "rr 1%", "cells", "s", "in min / max deg", "operations");
+  std::printf("%-44s %15s %6s %6s %6s %6s %6s %8s %8s %8s  %18s  %s  %s\n", "optimizer", "min / max deg", "<10", ">165",
+              ">175", "in<10", "in>165", "rr 1%", "cells", "s", "in min / max deg",
+              "bad by boundary vertices 0/1/2/3/4", "operations");
   {
     Triangulation tr;
     make(tr);

@@ -238,7 +238,11 @@ TEST_CASE("Bad options are rejected with exit 2 and no output", "[program]")
        "optimize " + in + out + " --criterion minmax-dihedral --threads -1",
        "optimize " + in + out + " --criterion minmax-dihedral --threads many",
        "optimize " + in + out + " --criterion minmax-dihedral --threads 5000",
-       "optimize " + in + out + " --threads 2"})
+       "optimize " + in + out + " --threads 2",
+       "optimize " + in + out + " --criterion dihedral-sine --moves-per-vertex 0",
+       "optimize " + in + out + " --criterion dihedral-sine --moves-per-vertex many",
+       "optimize " + in + out + " --criterion dihedral-sine --operations topological --moves-per-vertex 50",
+       "optimize " + in + out + " --moves-per-vertex 50"})
   {
     INFO("edge_swap " << args);
     const Run r = w.run(args);
@@ -391,6 +395,22 @@ TEST_CASE("optimize --operations runs the worst-first driver and writes a valid 
     REQUIRE(c.exit_code == 0);
     REQUIRE(c.out.find("valid triangulation") != std::string::npos);
   }
+  // --moves-per-vertex bounds the smoothing moves of each of the 300 vertices.
+  auto smoothing_moves = [&](const std::string& bound) {
+    const Run r = w.run("optimize " + w.path("cube.node") + " --start delaunay --criterion dihedral-sine "
+                        "--operations smoothing" + bound + " -o " + w.path("moved.ele") + " --stats " + w.path("m.json"));
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string stats = Workdir::slurp(w.path("m.json"));
+    const std::size_t at = stats.find("\"smoothing_moves\": ");
+    REQUIRE(at != std::string::npos);
+    return std::stol(stats.substr(at + 19));
+  };
+  const long one = smoothing_moves(" --moves-per-vertex 1"), bounded_by_default = smoothing_moves("");
+  REQUIRE(one > 0);
+  REQUIRE(one <= 300);
+  REQUIRE(bounded_by_default > one);
+  REQUIRE(Workdir::slurp(w.path("m.json")).find("\"moves_per_vertex\": 200") != std::string::npos);
   // The paper's driver, with its rounds.
   const Run r = w.run("optimize " + w.path("cube.node") + " --criterion minmax-dihedral --operations paper-flips -o " +
                       w.path("paper.ele") + " --history " + w.path("h.csv"));

@@ -82,6 +82,10 @@ int main(int argc, char** argv)
                                        "5,000 cells a thread is cut into as many parts; the same number gives the "
                                        "same mesh")
                       ->check(CLI::Range(0u, 4096u));
+  auto* moves_per_vertex = optimize->add_option("--moves-per-vertex", opt.moves_per_vertex,
+                                                "worst-first driver with smoothing: the most moves of one vertex "
+                                                "(default 200; fewer end sooner, with worse cells left)")
+                               ->check(CLI::Range(1, 1000000000));
   optimize->add_option("--history", opt.history, "CSV: one row per cycle");
   optimize->add_option("--stats", opt.stats, "JSON: counts, angles, ending, time");
 
@@ -165,6 +169,7 @@ int main(int argc, char** argv)
       opt.quality_target_given = target->count() > 0;
       opt.time_limit_given = time_limit->count() > 0;
       opt.threads_given = threads->count() > 0;
+      opt.moves_per_vertex_given = moves_per_vertex->count() > 0;
       opt.angle_range_given = angle_range->count() > 0;
       opt.flip_driver_options_given = perturb->count() > 0 || max_cycles->count() > 0;
       return run_optimize(opt);

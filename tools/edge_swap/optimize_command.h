@@ -36,6 +36,8 @@ struct Optimize_options
   bool time_limit_given = false;
   unsigned threads = 0;               ///< `--threads`: 0 for every core
   bool threads_given = false;
+  int moves_per_vertex = ES::internal::default_maximum_moves; ///< `--moves-per-vertex`
+  bool moves_per_vertex_given = false;
   unsigned int seed = 0;
   std::size_t max_cycles = 1000;
 };
@@ -170,9 +172,10 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
         in_parts = ES::internal::number_of_parts<std::decay_t<decltype(constraints)>>(
                        tr, ES::internal::threads_asked(o.threads)) > 1;
         const auto settings = np::keep_dihedral_angle_range(o.angle_range == "keep",
-            np::operations(operations, np::number_of_threads(o.threads, np::stop_flag(interruption->flag(), np::mesh_constraints(constraints,
+            np::operations(operations, np::number_of_threads(o.threads, np::maximum_moves_per_vertex(o.moves_per_vertex,
+                np::stop_flag(interruption->flag(), np::mesh_constraints(constraints,
                 CGAL::parameters::visitor(Worst_first_visitor<Criterion>(criterion, in))
-                    .maximum_running_time(time_limit))))));
+                    .maximum_running_time(time_limit)))))));
         return o.quality_target_given
                    ? ES::improve_worst_tetrahedra(tr, criterion, np::quality_target(o.quality_target, settings))
                    : ES::improve_worst_tetrahedra(tr, criterion, settings);
@@ -209,6 +212,7 @@ inline int run_worst_first(const Optimize_options& o, const Input& given, Triang
       if(o.quality_target_given) j["quality_target"] = o.quality_target;
       if(o.time_limit_given) j["time_limit"] = o.time_limit;
       j["threads"] = ES::internal::threads_asked(o.threads);
+      j["moves_per_vertex"] = o.moves_per_vertex;
       out << j.dump(2) << '\n';
     });
   files.commit();
@@ -307,6 +311,11 @@ inline int run_optimize(const Optimize_options& given)
   if(o.threads_given && operations == 0)
     throw Usage_error("--threads sets the worst-first driver (a quality --criterion, --operations other than "
                       "paper-flips)");
+  if(o.moves_per_vertex_given && !(operations & ES::SMOOTHING))
+    throw Usage_error(operations == 0 ? std::string("--moves-per-vertex bounds the worst-first driver's smoothing (a "
+                                                    "quality --criterion, --operations other than paper-flips)")
+                                      : "--moves-per-vertex bounds smoothing, which --operations " + options.operations +
+                                            " leaves out: add smoothing");
   if(operations != 0 && (!o.order.empty() || o.schedule != "queue"))
     throw Usage_error("--order and --schedule set the paper's flip driver (--operations paper-flips), not the "
                       "worst-first driver (--operations " + options.operations + ")" + defaulted);

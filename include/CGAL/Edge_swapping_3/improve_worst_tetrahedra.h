@@ -45,7 +45,7 @@ Worst_first_settings worst_first_settings(const Tr& tr, const NamedParameters& n
   Worst_first_settings s;
   s.operations = choose_parameter(get_parameter(np, internal_np::operations), unsigned(TOPOLOGICAL_OPERATIONS));
   s.maximum_ring = choose_parameter(get_parameter(np, internal_np::maximum_ring_size), 10);
-  s.maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), 20);
+  s.maximum_moves = choose_parameter(get_parameter(np, internal_np::maximum_moves_per_vertex), default_maximum_moves);
   const std::pair<double, double> change_angles =
       choose_parameter(get_parameter(np, internal_np::vertex_change_angles), std::pair<double, double>(30, 140));
   s.smallest_change_angle = change_angles.first;
@@ -88,10 +88,9 @@ Worst_first_settings worst_first_settings(const Tr& tr, const NamedParameters& n
 ///   \cgalParamNBegin{maximum_ring_size} the largest ring edge removal considers, and the most
 ///     triangles multi-face removal explores, default 10 \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_moves_per_vertex} with `SMOOTHING`, the most times a vertex moves in a run,
-///     default 20: smoothing a vertex to the best place of its star moves its neighbours' best places, and
-///     without a bound the gains shrink for long (measured on 300 random points, MaxMin dihedral sine:
-///     8,376 moves, 4.6 s without a bound; 3,793 moves, 2.0 s with 20; the worst sine 0.127 and 0.072)
-///     \cgalParamNEnd
+///     default 200: smoothing a vertex to the best place of its star moves its neighbours' best places, so
+///     the vertices near a fixed boundary move many times; the bound makes the run end (a lower one ends
+///     it sooner, with worse cells left: user manual, "The quality driver") \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} the most operations made (smoothing moves included), default 100
 ///     times the number of cells \cgalParamNEnd
 ///   \cgalParamNBegin{quality_target} a value of the measure: only the cells worse than it are taken from the

@@ -92,7 +92,7 @@ CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_ring_size)
 /// `Quality_operation` (default `TOPOLOGICAL_OPERATIONS`).
 CGAL_EDGE_SWAPPING_3_PARAMETER(operations)
 /// `int`: how many times smoothing may move one vertex in a run of
-/// `improve_worst_tetrahedra` (default 20).
+/// `improve_worst_tetrahedra` (default 200).
 CGAL_EDGE_SWAPPING_3_PARAMETER(maximum_moves_per_vertex)
 /// `double`: `improve_worst_tetrahedra` works only on the cells whose measure
 /// is worse than this value (default: on every cell).
