@@ -38,12 +38,9 @@ namespace internal {
 
 /// The settings of the quality driver, read once from the named parameters.
 /// The most smoothing moves of one vertex in a run, unless told otherwise.
-/// Near a fixed boundary, vertices go on moving as their neighbours move:
-/// on the Delaunay triangulation of 8,000 random points (dihedral sine, every
-/// operation) the run ends by itself after about 100,000 moves, 12 a vertex
-/// on average, and a bound of 20 stopped it at 50,000, leaving 326 / 356
-/// cells below 10 / above 165 degrees instead of 42 / 123, for 70% of the
-/// time (benchmarks.md, "Next to the hull").
+/// Near a fixed boundary, vertices go on moving as their neighbours move,
+/// and a low bound stops them there with bad cells left (benchmarks.md,
+/// "Next to the hull").
 constexpr int default_maximum_moves = 200;
 
 struct Worst_first_settings
